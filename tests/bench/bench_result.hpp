@@ -1,0 +1,18 @@
+#pragma once
+// What one timed Loop refinement reports, and the three implementations.
+#include "bench_input.hpp"
+
+#include <array>
+#include <cstddef>
+#include <vector>
+
+struct bench_result {
+  double ms = 0;            // refinement only, mesh construction excluded
+  std::size_t bytes = 0;    // heap held by the refined mesh structure
+  std::size_t vertices = 0, faces = 0;
+  std::vector<std::array<double, 3>> positions;  // only if keep_positions
+};
+
+bench_result run_openmesh_loop(const bench_input& input, int levels, bool keep_positions);
+bench_result run_cgal_loop(const bench_input& input, int levels, bool keep_positions);
+bench_result run_vvlib_loop(const bench_input& input, int levels, bool keep_positions);

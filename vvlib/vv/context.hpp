@@ -1,0 +1,242 @@
+// The per-model state: pooled vertex storage, labels, the garbage
+// collector, the random generator and the host proxy.
+//
+// Storage. Vertices live in fixed-size chunks that never move, so a
+// reference to a property stays valid while other vertices are created.
+// Inside a chunk the parts of a vertex (reference count, label, current and
+// old neighbourhood, current and old properties) are separate arrays that
+// grow in lockstep: a scan touches only the array it needs. Creating a
+// vertex reuses a freed slot or takes the next one; nothing is allocated per
+// vertex.
+//
+// Lifetime. A vertex lives while anything refers to it. Handles (program
+// variables) and mesh memberships are counted; neighbourhood entries are
+// not, because every edge is a two-vertex cycle that counting alone could
+// never free. Instead, a tracing pass from the counted vertices through
+// current and old neighbourhoods frees the unreachable ones. It runs when
+// enough counts have dropped to zero since the last pass (so its cost is
+// amortised over that work), never inside a neighbourhood loop whose
+// snapshot holds uncounted slots, and on demand (collect_garbage).
+#pragma once
+
+#include <algorithm>
+#include <cstdint>
+#include <memory>
+#include <random>
+#include <string>
+#include <vector>
+
+#include "detail/neighbourhood.hpp"
+#include "error.hpp"
+#include "fwd.hpp"
+#include "proxy.hpp"
+
+namespace vv {
+
+template <class Tr>
+class context {
+ public:
+  using traits_type = Tr;
+  using vertex_props = typename Tr::vertex_props;
+  using edge_props = typename Tr::edge_props;
+  using mesh_props = typename Tr::mesh_props;
+  using entry_traits = detail::entry_traits<edge_props>;
+  using entry = typename entry_traits::type;
+  using nb_type = detail::neighbourhood<entry, Tr::inline_valence>;
+
+  static constexpr std::uint32_t chunk_bits = 10;
+  static constexpr std::uint32_t chunk_size = 1u << chunk_bits;
+
+  context() { add_chunk(); }  // slot 0 is the null vertex and never used
+  context(const context&) = delete;
+  context& operator=(const context&) = delete;
+  //! Handles and meshes must not outlive their context.
+  ~context() {
+    // Properties may hold handles into this context: release them while the
+    // storage is still whole.
+    for (std::uint32_t id = 1; id < next_slot_; ++id) {
+      props(id) = vertex_props();
+      old_props(id) = vertex_props();
+    }
+  }
+
+  //! Create a vertex with value-initialised properties.
+  vertex<Tr> new_vertex() { return vertex<Tr>::from_slot(this, allocate_slot()); }
+  //! Create a vertex with the given properties.
+  vertex<Tr> new_vertex(const vertex_props& p) {
+    std::uint32_t id = allocate_slot();
+    props(id) = p;
+    return vertex<Tr>::from_slot(this, id);
+  }
+
+  //! Vertices alive (reachable or not yet collected).
+  std::size_t live_vertices() const noexcept { return live_; }
+  //! Slots ever used; bounds every slot id.
+  std::uint32_t slot_count() const noexcept { return next_slot_; }
+  //! Bytes held by vertex storage (for memory reports).
+  std::size_t storage_bytes() const noexcept;
+
+  //! Free every vertex that no handle or mesh can reach. Returns how many
+  //! were freed. Does nothing (returns 0) inside a neighbourhood loop.
+  std::size_t collect_garbage();
+
+  std::mt19937_64& random() noexcept { return rng_; }
+  void seed(std::uint64_t s) { rng_.seed(s); }
+
+  proxy& host() noexcept { return proxy_; }
+
+  //! Folder that relative file paths of the program resolve against.
+  std::string base_dir;
+  //! Reading the old state of a never-synchronised vertex is an error.
+  bool strict_old_state = false;
+
+  // ---- slot access, used by the algebra (ids come from handles) ----
+  std::uint32_t& refs(std::uint32_t id) noexcept { return at(id).refs[id & mask]; }
+  std::uint32_t label(std::uint32_t id) const noexcept { return at(id).label[id & mask]; }
+  nb_type& nb(std::uint32_t id) noexcept { return at(id).nb[id & mask]; }
+  nb_type& old_nb(std::uint32_t id) noexcept { return at(id).old_nb[id & mask]; }
+  vertex_props& props(std::uint32_t id) noexcept { return at(id).props[id & mask]; }
+  vertex_props& old_props(std::uint32_t id) noexcept { return at(id).old_props[id & mask]; }
+  bool is_live(std::uint32_t id) const noexcept {
+    return id != 0 && id < next_slot_ && label(id) != 0;
+  }
+
+  void retain(std::uint32_t id) noexcept { ++refs(id); }
+  void release(std::uint32_t id) noexcept {
+    if (--refs(id) == 0) ++suspects_;
+  }
+
+  //! The shared record handed out when edge records have no fields.
+  edge_props& empty_record() noexcept { return empty_record_; }
+
+  //! Keeps the collector from running while slots are held uncounted.
+  class gc_pause {
+   public:
+    explicit gc_pause(context& c) noexcept : c_(&c) { ++c_->gc_pauses_; }
+    gc_pause(const gc_pause&) = delete;
+    gc_pause& operator=(const gc_pause&) = delete;
+    ~gc_pause() { --c_->gc_pauses_; }
+
+   private:
+    context* c_;
+  };
+
+ private:
+  static constexpr std::uint32_t mask = chunk_size - 1;
+
+  struct chunk {
+    std::uint32_t refs[chunk_size];
+    std::uint32_t label[chunk_size];  // 0: the slot is free
+    nb_type nb[chunk_size];
+    nb_type old_nb[chunk_size];
+    vertex_props props[chunk_size];
+    vertex_props old_props[chunk_size];
+  };
+
+  chunk& at(std::uint32_t id) noexcept { return *chunks_[id >> chunk_bits]; }
+  const chunk& at(std::uint32_t id) const noexcept { return *chunks_[id >> chunk_bits]; }
+
+  void add_chunk() {
+    // Value-initialisation zeroes counts, labels and the properties.
+    chunks_.push_back(std::unique_ptr<chunk>(new chunk()));
+    for (nb_type& o : chunks_.back()->old_nb) o.set_flag(nb_type::never_synchronised);
+  }
+
+  std::uint32_t allocate_slot();
+  void free_slot(std::uint32_t id);
+
+  std::vector<std::unique_ptr<chunk>> chunks_;
+  std::vector<std::uint32_t> free_slots_;
+  std::uint32_t next_slot_ = 1;
+  std::uint32_t next_label_ = 1;
+  std::size_t live_ = 0;
+  std::size_t suspects_ = 0;  // counts that dropped to zero since the last pass
+  std::size_t gc_threshold_ = min_gc_threshold;
+  unsigned gc_pauses_ = 0;
+  std::mt19937_64 rng_{5489u};
+  proxy proxy_;
+  edge_props empty_record_{};
+
+  static constexpr std::size_t min_gc_threshold = 1u << 14;
+};
+
+template <class Tr>
+std::uint32_t context<Tr>::allocate_slot() {
+  if (suspects_ >= gc_threshold_ && gc_pauses_ == 0) collect_garbage();
+  if (next_label_ == 0) throw error(where{}, "vertex", "the 2^32 vertex labels are used up");
+  std::uint32_t id;
+  if (!free_slots_.empty()) {
+    id = free_slots_.back();
+    free_slots_.pop_back();
+  } else {
+    if ((next_slot_ >> chunk_bits) == chunks_.size()) add_chunk();
+    id = next_slot_++;
+  }
+  chunk& c = at(id);
+  c.label[id & mask] = next_label_++;
+  c.refs[id & mask] = 0;
+  ++live_;
+  return id;
+}
+
+template <class Tr>
+void context<Tr>::free_slot(std::uint32_t id) {
+  chunk& c = at(id);
+  std::uint32_t i = id & mask;
+  c.label[i] = 0;
+  c.nb[i].clear();
+  c.nb[i].set_flag(nb_type::no_flag);
+  c.old_nb[i].clear();
+  c.old_nb[i].set_flag(nb_type::never_synchronised);
+  // Resetting the properties may release handles they hold.
+  c.props[i] = vertex_props();
+  c.old_props[i] = vertex_props();
+  free_slots_.push_back(id);
+  --live_;
+}
+
+template <class Tr>
+std::size_t context<Tr>::collect_garbage() {
+  if (gc_pauses_ != 0) return 0;
+  std::vector<std::uint64_t> marked((next_slot_ + 63) / 64, 0);
+  auto is_marked = [&](std::uint32_t id) { return (marked[id >> 6] >> (id & 63)) & 1u; };
+  auto mark = [&](std::uint32_t id) { marked[id >> 6] |= std::uint64_t(1) << (id & 63); };
+  std::vector<std::uint32_t> stack;
+  for (std::uint32_t id = 1; id < next_slot_; ++id)
+    if (label(id) != 0 && refs(id) != 0) mark(id), stack.push_back(id);
+  auto visit = [&](const nb_type& n) {
+    for (const entry& e : n) {
+      std::uint32_t v = entry_traits::id(e);
+      if (!is_marked(v)) mark(v), stack.push_back(v);
+    }
+  };
+  while (!stack.empty()) {
+    std::uint32_t u = stack.back();
+    stack.pop_back();
+    visit(nb(u));
+    visit(old_nb(u));
+  }
+  // Unmarked vertices have no counted reference, so no handle (not even one
+  // inside another garbage vertex's properties) can observe their release.
+  std::size_t freed = 0;
+  for (std::uint32_t id = 1; id < next_slot_; ++id)
+    if (label(id) != 0 && !is_marked(id)) free_slot(id), ++freed;
+  suspects_ = 0;
+  gc_threshold_ = std::max(min_gc_threshold, live_ / 2);
+  return freed;
+}
+
+template <class Tr>
+std::size_t context<Tr>::storage_bytes() const noexcept {
+  std::size_t bytes = chunks_.size() * sizeof(chunk) +
+                      chunks_.capacity() * sizeof(std::unique_ptr<chunk>) +
+                      free_slots_.capacity() * sizeof(std::uint32_t);
+  for (const auto& c : chunks_)
+    for (std::uint32_t i = 0; i < chunk_size; ++i) {
+      if (c->nb[i].size() > Tr::inline_valence) bytes += c->nb[i].size() * sizeof(entry);
+      if (c->old_nb[i].size() > Tr::inline_valence) bytes += c->old_nb[i].size() * sizeof(entry);
+    }
+  return bytes;
+}
+
+}  // namespace vv

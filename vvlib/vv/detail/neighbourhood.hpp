@@ -1,0 +1,203 @@
+// The storage of one neighbourhood: a cyclic list of neighbour slots, each
+// with its half-edge record, plus the flagged position.
+//
+// Up to K entries live inline (no allocation for the common valences); a
+// longer list moves to the heap and moves back when it shrinks to K again,
+// so "size <= K" always means "inline". The whole object is 8 + 4K bytes
+// for record-less entries (32 bytes for K = 6).
+#pragma once
+
+#include <algorithm>
+#include <cstdint>
+#include <cstdlib>
+#include <cstring>
+#include <memory>
+#include <new>
+#include <type_traits>
+#include <utility>
+
+namespace vv::detail {
+
+//! A neighbour slot with a half-edge record.
+template <class E>
+struct record_entry {
+  std::uint32_t id;
+  E rec;
+};
+
+//! How to reach the slot id and the record of an entry. When the edge
+//! record type is empty, an entry is just the slot id.
+template <class E, bool Empty = std::is_empty<E>::value>
+struct entry_traits {
+  using type = record_entry<E>;
+  static std::uint32_t id(const type& e) noexcept { return e.id; }
+  static void set_id(type& e, std::uint32_t id) noexcept { e.id = id; }
+  static E& rec(type& e, E&) noexcept { return e.rec; }
+  static const E& rec(const type& e, const E&) noexcept { return e.rec; }
+  static type make(std::uint32_t id) { return type{id, E{}}; }
+};
+
+template <class E>
+struct entry_traits<E, true> {
+  using type = std::uint32_t;
+  static std::uint32_t id(type e) noexcept { return e; }
+  static void set_id(type& e, std::uint32_t id) noexcept { e = id; }
+  // Empty records carry no state: every entry shares the caller's instance.
+  static E& rec(type, E& shared) noexcept { return shared; }
+  static const E& rec(type, const E& shared) noexcept { return shared; }
+  static type make(std::uint32_t id) noexcept { return id; }
+};
+
+template <class Entry, unsigned K>
+class neighbourhood {
+  static_assert(K >= 1, "inline capacity must be at least one entry");
+
+ public:
+  //! Flag values: an index into the list, or one of these.
+  static constexpr std::int32_t no_flag = -1;
+  //! Only in an old state: never synchronised (behaves as an empty list).
+  static constexpr std::int32_t never_synchronised = -2;
+
+  neighbourhood() noexcept = default;
+  neighbourhood(const neighbourhood& o) : flag_(o.flag_) { assign(o.data(), o.size_); }
+  neighbourhood& operator=(const neighbourhood& o) {
+    if (this != &o) {
+      assign(o.data(), o.size_);
+      flag_ = o.flag_;
+    }
+    return *this;
+  }
+  ~neighbourhood() { release(); }
+
+  std::uint32_t size() const noexcept { return size_; }
+  bool empty() const noexcept { return size_ == 0; }
+  Entry* data() noexcept { return is_inline() ? inline_data() : heap().ptr; }
+  const Entry* data() const noexcept {
+    return is_inline() ? inline_data() : heap().ptr;
+  }
+  Entry* begin() noexcept { return data(); }
+  Entry* end() noexcept { return data() + size_; }
+  const Entry* begin() const noexcept { return data(); }
+  const Entry* end() const noexcept { return data() + size_; }
+  Entry& operator[](std::uint32_t i) noexcept { return data()[i]; }
+  const Entry& operator[](std::uint32_t i) const noexcept { return data()[i]; }
+
+  std::int32_t flag() const noexcept { return flag_; }
+  void set_flag(std::int32_t f) noexcept { flag_ = f; }
+
+  //! Replace the contents by n entries (the flag is left alone).
+  void assign(const Entry* src, std::uint32_t n) {
+    if (src == data() && n == size_) return;
+    destroy_all();
+    if (n > K) {
+      if (is_inline() || heap().cap < n) {
+        release_heap_storage();
+        heap_rep h{allocate(n), n};
+        set_heap(h);
+      }
+    } else if (!is_inline()) {
+      release_heap_storage();
+    }
+    size_ = n;  // mode now matches size: inline iff n <= K
+    std::uninitialized_copy(src, src + n, data());
+  }
+
+  //! Insert e before position pos (pos == size() appends).
+  void insert(std::uint32_t pos, const Entry& e) {
+    Entry copy(e);  // e may live in this list
+    if (size_ == K || (!is_inline() && size_ == heap().cap)) {
+      reallocate_with(pos, std::move(copy));
+      return;
+    }
+    Entry* d = data();
+    if (pos == size_) {
+      ::new (static_cast<void*>(d + size_)) Entry(std::move(copy));
+    } else {
+      ::new (static_cast<void*>(d + size_)) Entry(std::move(d[size_ - 1]));
+      std::move_backward(d + pos, d + size_ - 1, d + size_);
+      d[pos] = std::move(copy);
+    }
+    ++size_;
+  }
+
+  //! Remove the entry at pos.
+  void erase(std::uint32_t pos) {
+    Entry* d = data();
+    std::move(d + pos + 1, d + size_, d + pos);
+    d[size_ - 1].~Entry();
+    --size_;
+    if (size_ == K) shrink_to_inline();
+  }
+
+  void clear() noexcept {
+    release();
+    size_ = 0;
+  }
+
+ private:
+  struct heap_rep {
+    Entry* ptr;
+    std::uint32_t cap;
+  };
+  static constexpr std::size_t inline_bytes =
+      K * sizeof(Entry) > sizeof(heap_rep) ? K * sizeof(Entry) : sizeof(heap_rep);
+  static constexpr std::size_t storage_align =
+      alignof(Entry) > alignof(heap_rep) ? alignof(Entry) : alignof(heap_rep);
+
+  bool is_inline() const noexcept { return size_ <= K; }
+  Entry* inline_data() noexcept { return std::launder(reinterpret_cast<Entry*>(storage_)); }
+  const Entry* inline_data() const noexcept {
+    return std::launder(reinterpret_cast<const Entry*>(storage_));
+  }
+  heap_rep heap() const noexcept {
+    heap_rep h;
+    std::memcpy(&h, storage_, sizeof h);
+    return h;
+  }
+  void set_heap(const heap_rep& h) noexcept { std::memcpy(storage_, &h, sizeof h); }
+
+  static Entry* allocate(std::uint32_t n) {
+    return static_cast<Entry*>(::operator new(sizeof(Entry) * n));
+  }
+
+  void destroy_all() noexcept { std::destroy(data(), data() + size_); }
+
+  void release_heap_storage() noexcept {
+    if (!is_inline()) ::operator delete(heap().ptr);
+  }
+
+  void release() noexcept {
+    destroy_all();
+    release_heap_storage();
+  }
+
+  // The list is full: move it to a heap block twice as large, with e
+  // placed at pos. Afterwards size_ > K, which marks heap mode.
+  void reallocate_with(std::uint32_t pos, Entry&& e) {
+    std::uint32_t new_cap = size_ * 2;
+    Entry* block = allocate(new_cap);
+    Entry* old = data();
+    std::uninitialized_move(old, old + pos, block);
+    ::new (static_cast<void*>(block + pos)) Entry(std::move(e));
+    std::uninitialized_move(old + pos, old + size_, block + pos + 1);
+    std::destroy(old, old + size_);
+    if (!is_inline()) ::operator delete(heap().ptr);
+    set_heap(heap_rep{block, new_cap});
+    ++size_;
+  }
+
+  void shrink_to_inline() noexcept {
+    heap_rep h = heap();
+    Entry* src = h.ptr;
+    Entry* dst = inline_data();
+    std::uninitialized_move(src, src + size_, dst);
+    std::destroy(src, src + size_);
+    ::operator delete(h.ptr);
+  }
+
+  std::uint32_t size_ = 0;
+  std::int32_t flag_ = no_flag;
+  alignas(storage_align) unsigned char storage_[inline_bytes];
+};
+
+}  // namespace vv::detail

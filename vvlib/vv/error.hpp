@@ -1,0 +1,56 @@
+// Run-time errors of the vertex-vertex algebra and the source location they
+// are reported at.
+#pragma once
+
+#include <sstream>
+#include <stdexcept>
+#include <string>
+#include <utility>
+
+namespace vv {
+
+//! Where an operation was written. Every algebra function takes one as a
+//! defaulted last argument, so the location is the caller's: in a translated
+//! program the `#line` directives make that the .vvp file and line.
+struct where {
+  const char* file = nullptr;
+  int line = 0;
+
+  static constexpr where here(const char* f = __builtin_FILE(),
+                              int l = __builtin_LINE()) noexcept {
+    return where{f, l};
+  }
+};
+
+//! Every run-time error of vvlib: a null target, a duplicate in `make`, a
+//! missing half-edge, a malformed .vvm file, ...  what() is the whole
+//! one-line message, "file:line: operation: problem".
+class error : public std::runtime_error {
+ public:
+  error(const where& w, const std::string& operation, const std::string& problem)
+      : std::runtime_error(compose(w, operation, problem)),
+        file_(w.file ? w.file : ""), line_(w.line) {}
+
+  //! An error in a data file (line 0: the file as a whole).
+  error(std::string file, int line, const std::string& problem)
+      : std::runtime_error(file + (line > 0 ? ":" + std::to_string(line) : std::string()) + ": " +
+                           problem),
+        file_(std::move(file)), line_(line) {}
+
+  const std::string& file() const noexcept { return file_; }
+  int line() const noexcept { return line_; }
+
+ private:
+  static std::string compose(const where& w, const std::string& operation,
+                             const std::string& problem) {
+    std::ostringstream os;
+    if (w.file) os << w.file << ':' << w.line << ": ";
+    os << operation << ": " << problem;
+    return os.str();
+  }
+
+  std::string file_;
+  int line_;
+};
+
+}  // namespace vv

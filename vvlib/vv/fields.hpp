@@ -1,0 +1,123 @@
+// Property structs as named fields, and property values as text.
+//
+// A property struct lists its fields through a member template
+//     template <class F> void vv_fields(F&& f) { f("pos", pos); f("c", c); }
+// (the translator generates it; C++ users write it). Files (.vvm) and the
+// mesh exporters find fields by these names.
+//
+// Values are written with the type's `<<` and read with its `>>`, except
+// that floating-point numbers (alone or as the coordinates of a point-like
+// type with x(), y(), z()) are written in the shortest form that reads back
+// exactly, and strings are taken whole.
+#pragma once
+
+#include <charconv>
+#include <cmath>
+#include <cstdlib>
+#include <iomanip>
+#include <limits>
+#include <sstream>
+#include <string>
+#include <type_traits>
+#include <utility>
+
+namespace vv {
+
+namespace detail {
+
+// Accepts any field type, for the detection above.
+struct any_field {
+  template <class V>
+  void operator()(const char*, V&) const noexcept {}
+};
+template <class T, class = void>
+struct has_fields : std::false_type {};
+template <class T>
+struct has_fields<T, std::void_t<decltype(std::declval<T&>().vv_fields(any_field{}))>>
+    : std::true_type {};
+
+template <class T, class = void>
+struct is_point_like : std::false_type {};
+template <class T>
+struct is_point_like<T, std::void_t<decltype(std::declval<const T&>().x()),
+                                    decltype(std::declval<const T&>().y()),
+                                    decltype(std::declval<const T&>().z())>>
+    : std::is_floating_point<std::decay_t<decltype(std::declval<const T&>().x())>> {};
+
+template <class T>
+void write_float(std::string& out, T v) {
+  char buf[64];
+  auto res = std::to_chars(buf, buf + sizeof buf, v);
+  out.append(buf, res.ptr);
+}
+
+inline bool only_space_left(std::istream& is) {
+  is >> std::ws;
+  return is.eof();
+}
+
+}  // namespace detail
+
+//! Calls f(name, field) for every field of a property struct (none when it
+//! declares no vv_fields).
+template <class P, class F>
+void for_each_field(P& props, F&& f) {
+  using mutable_p = std::remove_const_t<P>;
+  // vv_fields is usually not const-qualified; reading through it is safe.
+  if constexpr (detail::has_fields<mutable_p>::value) const_cast<mutable_p&>(props).vv_fields(f);
+}
+
+//! A property value as file text.
+template <class T>
+std::string value_to_text(const T& v) {
+  std::string out;
+  if constexpr (std::is_same_v<T, bool>) {
+    out = v ? "1" : "0";
+  } else if constexpr (std::is_floating_point_v<T>) {
+    detail::write_float(out, v);
+  } else if constexpr (std::is_convertible_v<const T&, std::string>) {
+    out = std::string(v);
+  } else if constexpr (detail::is_point_like<T>::value) {
+    detail::write_float(out, v.x());
+    out += ' ';
+    detail::write_float(out, v.y());
+    out += ' ';
+    detail::write_float(out, v.z());
+  } else {
+    std::ostringstream os;
+    os << std::setprecision(std::numeric_limits<double>::max_digits10) << v;
+    out = os.str();
+  }
+  return out;
+}
+
+//! Parses file text into a property value; false when the text is not a
+//! complete value of the type (the value is then unspecified).
+template <class T>
+bool text_to_value(const std::string& text, T& v) {
+  if constexpr (std::is_same_v<T, bool>) {
+    if (text == "1" || text == "true") return v = true, true;
+    if (text == "0" || text == "false") return v = false, true;
+    return false;
+  } else if constexpr (std::is_floating_point_v<T>) {
+    // strtod also takes the "inf" and "nan" that to_chars writes.
+    const char* begin = text.c_str();
+    char* end = nullptr;
+    long double x = std::strtold(begin, &end);
+    if (end == begin) return false;
+    while (*end == ' ' || *end == '\t' || *end == '\n' || *end == '\r') ++end;
+    if (*end != '\0') return false;
+    if (std::isfinite(x) && std::fabs(x) > std::numeric_limits<T>::max()) return false;
+    v = static_cast<T>(x);
+    return true;
+  } else if constexpr (std::is_same_v<T, std::string>) {
+    v = text;
+    return true;
+  } else {
+    std::istringstream is(text);
+    is >> v;
+    return !is.fail() && detail::only_space_left(is);
+  }
+}
+
+}  // namespace vv

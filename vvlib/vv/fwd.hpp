@@ -1,0 +1,37 @@
+// Forward declarations and the traits bundle that parameterises everything.
+#pragma once
+
+namespace vv {
+
+//! The property struct of a model that declares no properties of a kind.
+struct no_props {
+  template <class F>
+  void vv_fields(F&&) {}
+  template <class F>
+  void vv_fields(F&&) const {}
+  friend bool operator==(const no_props&, const no_props&) noexcept { return true; }
+  friend bool operator!=(const no_props&, const no_props&) noexcept { return false; }
+};
+
+//! The user-defined property structs of one model: per vertex, per half-edge
+//! record and per mesh. InlineValence neighbours are stored without a heap
+//! allocation (6 suits triangle meshes; larger neighbourhoods still work).
+template <class VertexProps, class EdgeProps = no_props, class MeshProps = no_props,
+          unsigned InlineValence = 6>
+struct traits {
+  using vertex_props = VertexProps;
+  using edge_props = EdgeProps;
+  using mesh_props = MeshProps;
+  static constexpr unsigned inline_valence = InlineValence;
+};
+
+template <class Tr>
+class context;
+template <class Tr>
+class vertex;
+template <class Tr>
+class old_vertex;
+template <class Tr>
+class mesh;
+
+}  // namespace vv

@@ -1,0 +1,103 @@
+// Whole-file reading, atomic writing and path resolution shared by the
+// mesh readers and writers.
+#pragma once
+
+#include <algorithm>
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
+#include <fstream>
+#include <iterator>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "../error.hpp"
+
+namespace vv::io {
+
+//! A file's text with a map from byte offsets to line numbers.
+class text_file {
+ public:
+  text_file(std::string name, std::string text) : name_(std::move(name)), text_(std::move(text)) {
+    line_starts_.push_back(0);
+    for (std::size_t i = 0; i < text_.size(); ++i)
+      if (text_[i] == '\n') line_starts_.push_back(i + 1);
+  }
+  const std::string& name() const noexcept { return name_; }
+  const std::string& text() const noexcept { return text_; }
+  //! 1-based line of a byte offset (offsets past the end give the last line).
+  int line_at(std::ptrdiff_t offset) const noexcept {
+    if (offset < 0) return 0;
+    auto it = std::upper_bound(line_starts_.begin(), line_starts_.end(),
+                               static_cast<std::size_t>(offset));
+    return static_cast<int>(it - line_starts_.begin());
+  }
+  [[noreturn]] void fail(std::ptrdiff_t offset, const std::string& problem) const {
+    throw error(name_, line_at(offset), problem);
+  }
+
+ private:
+  std::string name_, text_;
+  std::vector<std::size_t> line_starts_;
+};
+
+inline text_file read_text_file(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw error(path, 0, std::string("cannot open file: ") + std::strerror(errno));
+  std::ostringstream ss;
+  ss << in.rdbuf();
+  if (in.bad()) throw error(path, 0, "read error");
+  return text_file(path, ss.str());
+}
+
+//! The extension of a path, lower-cased, with its dot (".obj"), or "".
+inline std::string extension_of(const std::string& path) {
+  std::size_t slash = path.find_last_of('/');
+  std::size_t dot = path.find_last_of('.');
+  if (dot == std::string::npos || (slash != std::string::npos && dot < slash)) return "";
+  std::string ext = path.substr(dot);
+  std::transform(ext.begin(), ext.end(), ext.begin(),
+                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  return ext;
+}
+
+//! A temporary name beside path, with the same extension (writers that
+//! choose the format by extension still work on it).
+inline std::string temporary_beside(const std::string& path) {
+  return path + ".vvtmp" + extension_of(path);
+}
+
+//! Moves a finished temporary file over path, so readers never see a
+//! half-written file; the temporary is removed if that fails.
+inline void commit_file(const std::string& temporary, const std::string& path) {
+  if (std::rename(temporary.c_str(), path.c_str()) != 0) {
+    int e = errno;
+    std::remove(temporary.c_str());
+    throw error(path, 0, std::string("cannot write file: ") + std::strerror(e));
+  }
+}
+
+//! Writes text to path atomically (a temporary beside it, then rename).
+inline void write_text_file(const std::string& path, const std::string& text) {
+  std::string tmp = temporary_beside(path);
+  {
+    std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
+    if (!out) throw error(path, 0, std::string("cannot write file: ") + std::strerror(errno));
+    out.write(text.data(), static_cast<std::streamsize>(text.size()));
+    out.flush();
+    if (!out) {
+      std::remove(tmp.c_str());
+      throw error(path, 0, "cannot write file (disk full?)");
+    }
+  }
+  commit_file(tmp, path);
+}
+
+//! A program's relative path, resolved against its model folder.
+inline std::string resolve(const std::string& base_dir, const std::string& path) {
+  if (base_dir.empty() || path.empty() || path[0] == '/') return path;
+  return base_dir.back() == '/' ? base_dir + path : base_dir + "/" + path;
+}
+
+}  // namespace vv::io

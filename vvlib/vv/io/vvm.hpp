@@ -1,0 +1,265 @@
+// The .vvm file format (LANGUAGE.md section 7): an XML <mesh> whose <v>
+// elements are the vertices in order (attributes: properties and the
+// neighbour list `nb`) and whose <e> elements set half-edge records.
+//
+// Reading validates the whole file before touching the mesh: on any
+// problem it throws vv::error "file:line: problem" and the mesh is as it
+// was. Writing gives the sub-graph induced by the mesh (neighbours outside
+// it are left out), is deterministic, and replaces the file atomically.
+#pragma once
+
+#include <cstdint>
+#include <cstring>
+#include <functional>
+#include <limits>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include <pugixml.hpp>
+
+#include "../edges.hpp"
+#include "../edits.hpp"
+#include "../fields.hpp"
+#include "../mesh.hpp"
+#include "../orbits.hpp"
+#include "files.hpp"
+
+namespace vv {
+
+namespace detail {
+
+// Sets the field called `name` of props from text. Returns false when the
+// struct has no such field; throws through fail() when the text is bad.
+template <class P, class Fail>
+bool set_field(P& props, const char* name, const char* text, Fail&& fail) {
+  bool found = false;
+  for_each_field(props, [&](const char* field, auto& value) {
+    if (found || std::strcmp(field, name) != 0) return;
+    found = true;
+    if (!text_to_value(std::string(text), value))
+      fail(std::string("cannot read \"") + text + "\" as the value of " + name);
+  });
+  return found;
+}
+
+template <class P>
+void set_fields_from(P& props, const pugi::xml_node& node, const io::text_file& file,
+                     const char* skip[], const std::string& who) {
+  for (pugi::xml_attribute a : node.attributes()) {
+    bool skipped = false;
+    for (const char** s = skip; *s; ++s) skipped = skipped || std::strcmp(*s, a.name()) == 0;
+    if (skipped) continue;
+    set_field(props, a.name(), a.value(),
+              [&](const std::string& problem) { file.fail(node.offset_debug(), who + ": " + problem); });
+  }
+}
+
+// Parses an unsigned vertex index of the file; fails on anything else.
+inline std::uint32_t parse_index(const std::string& token, std::size_t count,
+                                 const std::function<void(const std::string&)>& fail) {
+  if (token.empty() || token.find_first_not_of("0123456789") != std::string::npos)
+    fail("\"" + token + "\" is not a vertex index");
+  if (token.size() > 10 || std::stoull(token) >= count)
+    fail("vertex index " + token + " is out of range (the file has " + std::to_string(count) +
+         " vertices)");
+  return static_cast<std::uint32_t>(std::stoul(token));
+}
+
+}  // namespace detail
+
+//! Replaces the contents and properties of m with the .vvm text (name is
+//! used in error messages). New vertices are created in file order.
+template <class Tr>
+void parse_vvm(mesh<Tr>& m, const io::text_file& file) {
+  using VP = typename Tr::vertex_props;
+  using EP = typename Tr::edge_props;
+  using MP = typename Tr::mesh_props;
+  context<Tr>* ctx = m.ctx();
+  if (!ctx)
+    throw error(file.name(), 0,
+                "the mesh has no context to create vertices in (construct it with mesh(context))");
+  if (file.text().find_first_not_of(" \t\r\n") == std::string::npos)
+    file.fail(0, "empty file (expected a <mesh> element)");
+
+  pugi::xml_document doc;
+  pugi::xml_parse_result parsed = doc.load_buffer(file.text().data(), file.text().size(),
+                                                  pugi::parse_default, pugi::encoding_utf8);
+  if (!parsed) file.fail(parsed.offset, std::string("malformed XML: ") + parsed.description());
+  pugi::xml_node root = doc.document_element();
+  if (!root) file.fail(0, "no root element (expected <mesh>)");
+  if (std::strcmp(root.name(), "mesh") != 0)
+    file.fail(root.offset_debug(), std::string("the root element is <") + root.name() +
+                                       ">, expected <mesh>");
+
+  MP mesh_props{};
+  static const char* no_skip[] = {nullptr};
+  detail::set_fields_from(mesh_props, root, file, no_skip, "mesh");
+
+  std::vector<pugi::xml_node> vs, es;
+  for (pugi::xml_node n : root.children()) {
+    if (n.type() != pugi::node_element) continue;
+    if (std::strcmp(n.name(), "v") == 0) vs.push_back(n);
+    else if (std::strcmp(n.name(), "e") == 0) es.push_back(n);
+    else
+      file.fail(n.offset_debug(), std::string("unexpected element <") + n.name() +
+                                      "> (expected <v> or <e>)");
+  }
+  const std::size_t count = vs.size();
+
+  std::vector<VP> props(count, VP());
+  std::vector<std::vector<std::uint32_t>> nbs(count);
+  static const char* v_skip[] = {"nb", nullptr};
+  for (std::size_t i = 0; i < count; ++i) {
+    std::string who = "vertex " + std::to_string(i);
+    auto fail = [&](const std::string& problem) { file.fail(vs[i].offset_debug(), who + ": " + problem); };
+    detail::set_fields_from(props[i], vs[i], file, v_skip, who);
+    pugi::xml_attribute nb = vs[i].attribute("nb");
+    if (!nb) fail("no nb attribute (write nb=\"\" for a vertex without neighbours)");
+    std::istringstream tokens(nb.value());
+    std::string token;
+    while (tokens >> token) {
+      std::uint32_t j = detail::parse_index(token, count, fail);
+      if (j == i) fail("lists itself as a neighbour");
+      for (std::uint32_t k : nbs[i])
+        if (k == j) fail("lists vertex " + token + " twice as a neighbour");
+      nbs[i].push_back(j);
+    }
+  }
+
+  struct record {
+    std::uint32_t first, second;
+    bool symmetric;
+    EP value;
+  };
+  std::vector<record> records;
+  static const char* e_skip[] = {"symmetric", "first", "second", nullptr};
+  for (pugi::xml_node e : es) {
+    auto fail = [&](const std::string& problem) { file.fail(e.offset_debug(), "edge: " + problem); };
+    auto index_attr = [&](const char* name) {
+      pugi::xml_attribute a = e.attribute(name);
+      if (!a) fail(std::string("no ") + name + " attribute");
+      return detail::parse_index(a.value(), count, fail);
+    };
+    record r{index_attr("first"), index_attr("second"), false, EP{}};
+    if (pugi::xml_attribute s = e.attribute("symmetric")) {
+      if (!text_to_value(std::string(s.value()), r.symmetric))
+        fail(std::string("symmetric must be 0 or 1, not \"") + s.value() + "\"");
+    }
+    auto adjacent = [&](std::uint32_t a, std::uint32_t b) {
+      for (std::uint32_t k : nbs[a])
+        if (k == b) return true;
+      return false;
+    };
+    if (!adjacent(r.first, r.second))
+      fail("vertex " + std::to_string(r.second) + " is not a neighbour of vertex " +
+           std::to_string(r.first));
+    if (r.symmetric && !adjacent(r.second, r.first))
+      fail("symmetric, but vertex " + std::to_string(r.first) + " is not a neighbour of vertex " +
+           std::to_string(r.second));
+    detail::set_fields_from(r.value, e, file, e_skip, "edge");
+    records.push_back(std::move(r));
+  }
+
+  // Everything is valid: build the new contents, then swap them in.
+  mesh<Tr> fresh(*ctx);
+  static_cast<MP&>(fresh) = mesh_props;
+  std::vector<vertex<Tr>> created;
+  created.reserve(count);
+  for (std::size_t i = 0; i < count; ++i) created.push_back(ctx->new_vertex(props[i]));
+  std::vector<vertex<Tr>> list;
+  for (std::size_t i = 0; i < count; ++i) {
+    list.clear();
+    for (std::uint32_t j : nbs[i]) list.push_back(created[j]);
+    make_nb_from(created[i], list);
+    fresh.add(created[i]);
+  }
+  for (const record& r : records) {
+    edge(created[r.first], created[r.second]) = r.value;
+    if (r.symmetric) edge(created[r.second], created[r.first]) = r.value;
+  }
+  m = std::move(fresh);
+}
+
+//! Reads a .vvm file into m (see parse_vvm).
+template <class Tr>
+void read_vvm(mesh<Tr>& m, const std::string& path) {
+  parse_vvm(m, io::read_text_file(path));
+}
+
+//! The .vvm text of a mesh.
+template <class Tr>
+std::string vvm_text(const mesh<Tr>& m) {
+  using EP = typename Tr::edge_props;
+  using MP = typename Tr::mesh_props;
+  pugi::xml_document doc;
+  pugi::xml_node root = doc.append_child("mesh");
+  auto put_fields = [](pugi::xml_node node, const auto& props) {
+    for_each_field(props, [&](const char* name, const auto& value) {
+      node.append_attribute(name) = value_to_text(value).c_str();
+    });
+  };
+  put_fields(root, static_cast<const MP&>(m));
+
+  context<Tr>* ctx = m.ctx();
+  std::vector<std::uint32_t> pos = member_positions(m);
+  constexpr std::uint32_t none = std::numeric_limits<std::uint32_t>::max();
+  std::vector<std::uint32_t> members;
+  for (std::uint32_t id : m.slots())
+    if (id) members.push_back(id);
+
+  for (std::uint32_t id : members) {
+    pugi::xml_node v = root.append_child("v");
+    put_fields(v, ctx->props(id));
+    std::string nb;
+    for (const auto& e : ctx->nb(id)) {
+      std::uint32_t u = detail::entry_id(e);
+      if (pos[u] == none) continue;
+      if (!nb.empty()) nb += ' ';
+      nb += std::to_string(pos[u]);
+    }
+    v.append_attribute("nb") = nb.c_str();
+  }
+
+  using entry_traits = typename context<Tr>::entry_traits;
+  const EP blank{};
+  for (std::uint32_t a : members) {
+    for (auto& e : ctx->nb(a)) {
+      std::uint32_t b = detail::entry_id(e);
+      if (pos[b] == none) continue;
+      const EP& rec = entry_traits::rec(e, ctx->empty_record());
+      if (rec == blank) continue;
+      // A pair with equal records both ways is written once, as symmetric.
+      std::int32_t back = detail::find(ctx->nb(b), a);
+      bool same_back = back >= 0 &&
+          entry_traits::rec(ctx->nb(b)[static_cast<std::uint32_t>(back)], ctx->empty_record()) == rec;
+      if (same_back && pos[b] < pos[a]) continue;
+      pugi::xml_node x = root.append_child("e");
+      x.append_attribute("symmetric") = same_back ? "1" : "0";
+      x.append_attribute("first") = pos[a];
+      x.append_attribute("second") = pos[b];
+      put_fields(x, rec);
+    }
+  }
+  std::ostringstream os;
+  doc.save(os, "  ", pugi::format_indent | pugi::format_no_declaration, pugi::encoding_utf8);
+  return os.str();
+}
+
+//! Writes m to a .vvm file, atomically.
+template <class Tr>
+void write_vvm(const mesh<Tr>& m, const std::string& path) {
+  io::write_text_file(path, vvm_text(m));
+}
+
+template <class Tr>
+void mesh<Tr>::readXMLFile(const std::string& path) {
+  read_vvm(*this, io::resolve(ctx_ ? ctx_->base_dir : std::string(), path));
+}
+
+template <class Tr>
+void mesh<Tr>::writeXMLFile(const std::string& path) const {
+  write_vvm(*this, io::resolve(ctx_ ? ctx_->base_dir : std::string(), path));
+}
+
+}  // namespace vv

@@ -1,0 +1,299 @@
+// Meshes (LANGUAGE.md section 5): sets of vertices with O(1) membership and
+// insertion-ordered iteration. A mesh refers to its members (they stay
+// alive while in it) but does not own them: a vertex may be in many meshes.
+//
+// Representation: `order_` lists member slots in insertion order, with 0 for
+// a removed member (a hole); `index_` is an open-addressing hash table
+// (linear probing, load at most 1/2) from slot to position in `order_`,
+// storing position + 1 so that 0 means "empty". Holes are squeezed out when
+// they outnumber the members, but never during an iteration, so a loop's
+// positions stay valid (LANGUAGE.md section 6).
+#pragma once
+
+#include <algorithm>
+#include <cstddef>
+#include <cstdint>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "vertex.hpp"
+
+namespace vv {
+
+template <class Tr>
+class mesh : public Tr::mesh_props {
+ public:
+  using traits_type = Tr;
+  using context_type = context<Tr>;
+  using vertex_type = vertex<Tr>;
+  using props_type = typename Tr::mesh_props;
+
+  //! A mesh that takes its context from the first vertex added.
+  mesh() = default;
+  explicit mesh(context_type& ctx) : ctx_(&ctx) {}
+  mesh(const mesh& o) : props_type(o), ctx_(o.ctx_) { copy_members(o); }
+  mesh(mesh&& o) noexcept
+      : props_type(std::move(static_cast<props_type&>(o))), ctx_(o.ctx_),
+        order_(std::move(o.order_)), index_(std::move(o.index_)), count_(o.count_),
+        holes_(o.holes_), index_bits_(o.index_bits_) {
+    o.order_.clear();
+    o.index_.clear();
+    o.count_ = o.holes_ = 0;
+    o.index_bits_ = 0;
+  }
+  //! `M = N`: the same set (vertices are shared) and the same properties.
+  mesh& operator=(const mesh& o) {
+    if (this == &o) return *this;
+    static_cast<props_type&>(*this) = o;
+    if (iterating_ > 0) {
+      assign_during_iteration(o);
+    } else {
+      mesh copy(o);
+      swap_members(copy);
+    }
+    return *this;
+  }
+  mesh& operator=(mesh&& o) noexcept(false) {
+    if (this == &o) return *this;
+    if (iterating_ > 0) return *this = static_cast<const mesh&>(o);
+    static_cast<props_type&>(*this) = std::move(static_cast<props_type&>(o));
+    swap_members(o);
+    o.clear();
+    return *this;
+  }
+  ~mesh() { release_all(); }
+
+  //! `add v to M;` (no effect if v is already a member)
+  void add(const vertex_type& v, where w = where::here()) {
+    if (!v) throw error(w, "add", "cannot add the null vertex to a mesh");
+    adopt_context(v, w);
+    if (find_position(v.slot()) >= 0) return;
+    ctx_->retain(v.slot());
+    if ((count_ + 1) * 2 > index_.size()) rehash(index_.empty() ? 16 : index_.size() * 2);
+    order_.push_back(v.slot());
+    insert_index(v.slot(), order_.size() - 1);
+    ++count_;
+  }
+
+  //! `remove v from M;` (no effect if v is not a member)
+  void remove(const vertex_type& v, where = where::here()) {
+    if (!v || v.ctx() != ctx_) return;
+    std::size_t s;
+    if (!find_index_slot(v.slot(), s)) return;
+    std::size_t pos = index_[s] - 1;
+    erase_index_slot(s);
+    order_[pos] = 0;
+    ++holes_;
+    --count_;
+    ctx_->release(v.slot());
+    if (iterating_ == 0) compact_if_sparse();
+  }
+
+  //! `is v in M`
+  bool contains(const vertex_type& v) const noexcept {
+    return v && v.ctx() == ctx_ && find_position(v.slot()) >= 0;
+  }
+
+  //! `merge M with N;` / `M += N`
+  void merge(const mesh& o, where w = where::here()) {
+    if (&o == this) return;
+    for (std::uint32_t id : o.order_)
+      if (id) add(vertex_type::from_slot(o.ctx_, id), w);
+  }
+  mesh& operator+=(const mesh& o) {
+    merge(o, where{});
+    return *this;
+  }
+
+  //! `clear M;`
+  void clear() noexcept {
+    release_all();
+    std::fill(index_.begin(), index_.end(), 0u);
+    if (iterating_ > 0) {
+      std::fill(order_.begin(), order_.end(), 0u);
+      holes_ = order_.size();
+    } else {
+      order_.clear();
+      holes_ = 0;
+    }
+    count_ = 0;
+  }
+
+  std::size_t size() const noexcept { return count_; }
+  bool empty() const noexcept { return count_ == 0; }
+  //! vv 1.1 name of size().
+  std::size_t vertexCount() const noexcept { return count_; }
+
+  //! `M.readXMLFile(path)`: replace M by a .vvm file (vv/io/vvm.hpp).
+  //! Relative paths resolve against the context's base_dir.
+  void readXMLFile(const std::string& path);
+  //! `M.writeXMLFile(path)`: save M as a .vvm file (vv/io/vvm.hpp).
+  void writeXMLFile(const std::string& path) const;
+
+  context_type* ctx() const noexcept { return ctx_; }
+  //! Bytes held by the set (for memory reports).
+  std::size_t storage_bytes() const noexcept {
+    return order_.capacity() * sizeof(std::uint32_t) + index_.capacity() * sizeof(std::uint32_t);
+  }
+
+  // ---- iteration: members present at the start, in insertion order,
+  // skipping those removed before their turn ----
+  class iterator {
+   public:
+    iterator(const iterator& o) noexcept : m_(o.m_), pos_(o.pos_), end_(o.end_) { ++m_->iterating_; }
+    iterator& operator=(const iterator&) = delete;
+    ~iterator() { m_->end_iteration(); }
+    vertex_type operator*() const { return vertex_type::from_slot(m_->ctx_, m_->order_[pos_]); }
+    iterator& operator++() {
+      ++pos_;
+      skip_holes();
+      return *this;
+    }
+    struct sentinel {};
+    friend bool operator!=(const iterator& it, sentinel) noexcept { return it.pos_ < it.end_; }
+    friend bool operator==(const iterator& it, sentinel) noexcept { return it.pos_ >= it.end_; }
+
+   private:
+    friend class mesh;
+    explicit iterator(const mesh* m) noexcept : m_(m), pos_(0), end_(m->order_.size()) {
+      ++m_->iterating_;
+      skip_holes();
+    }
+    void skip_holes() noexcept {
+      while (pos_ < end_ && m_->order_[pos_] == 0) ++pos_;
+    }
+    const mesh* m_;
+    std::size_t pos_, end_;
+  };
+  iterator begin() const noexcept { return iterator(this); }
+  typename iterator::sentinel end() const noexcept { return {}; }
+
+  //! Slots of the members in order (holes are 0), for library algorithms.
+  const std::vector<std::uint32_t>& slots() const noexcept { return order_; }
+
+ private:
+  static std::size_t hash(std::uint32_t id, unsigned bits) noexcept {
+    return static_cast<std::size_t>((id * 2654435769u) >> (32 - bits));
+  }
+
+  void adopt_context(const vertex_type& v, const where& w) {
+    if (!ctx_) ctx_ = v.ctx();
+    else if (v.ctx() != ctx_)
+      throw error(w, "add", name_of(v) + " belongs to another context than the mesh");
+  }
+
+  bool find_index_slot(std::uint32_t id, std::size_t& s) const noexcept {
+    if (index_.empty()) return false;
+    std::size_t mask = index_.size() - 1;
+    for (s = hash(id, index_bits_);; s = (s + 1) & mask) {
+      std::uint32_t p = index_[s];
+      if (p == 0) return false;
+      if (order_[p - 1] == id) return true;
+    }
+  }
+  std::ptrdiff_t find_position(std::uint32_t id) const noexcept {
+    std::size_t s;
+    return find_index_slot(id, s) ? static_cast<std::ptrdiff_t>(index_[s]) - 1 : -1;
+  }
+  void insert_index(std::uint32_t id, std::size_t pos) noexcept {
+    std::size_t mask = index_.size() - 1;
+    std::size_t s = hash(id, index_bits_);
+    while (index_[s] != 0) s = (s + 1) & mask;
+    index_[s] = static_cast<std::uint32_t>(pos + 1);
+  }
+  // Backward-shift deletion keeps every probe sequence unbroken.
+  void erase_index_slot(std::size_t s) noexcept {
+    std::size_t mask = index_.size() - 1;
+    std::size_t hole = s;
+    for (std::size_t j = (s + 1) & mask; index_[j] != 0; j = (j + 1) & mask) {
+      std::size_t home = hash(order_[index_[j] - 1], index_bits_);
+      // Move j into the hole unless its home lies cyclically in (hole, j].
+      bool stays = hole <= j ? (home > hole && home <= j) : (home > hole || home <= j);
+      if (!stays) {
+        index_[hole] = index_[j];
+        hole = j;
+      }
+    }
+    index_[hole] = 0;
+  }
+  void rehash(std::size_t capacity) {
+    index_bits_ = 0;
+    while ((std::size_t(1) << index_bits_) < capacity) ++index_bits_;
+    index_.assign(std::size_t(1) << index_bits_, 0u);
+    for (std::size_t pos = 0; pos < order_.size(); ++pos)
+      if (order_[pos]) insert_index(order_[pos], pos);
+  }
+
+  // Squeeze out holes once they outnumber the members.
+  void compact_if_sparse() {
+    if (iterating_ > 0 || holes_ < 64 || holes_ < count_) return;
+    order_.erase(std::remove(order_.begin(), order_.end(), 0u), order_.end());
+    holes_ = 0;
+    rehash(std::max<std::size_t>(16, index_.size()));
+  }
+  void end_iteration() const noexcept {
+    if (--iterating_ == 0) const_cast<mesh*>(this)->compact_if_sparse();
+  }
+
+  void copy_members(const mesh& o) {
+    order_.reserve(o.count_);
+    for (std::uint32_t id : o.order_)
+      if (id) order_.push_back(id), ctx_->retain(id);
+    count_ = order_.size();
+    if (count_) rehash(std::max<std::size_t>(16, o.index_.size()));
+  }
+  void swap_members(mesh& o) noexcept {
+    std::swap(ctx_, o.ctx_);
+    order_.swap(o.order_);
+    index_.swap(o.index_);
+    std::swap(count_, o.count_);
+    std::swap(holes_, o.holes_);
+    std::swap(index_bits_, o.index_bits_);
+  }
+  // M = N inside a loop over M: keep positions, change membership only.
+  void assign_during_iteration(const mesh& o) {
+    for (std::size_t pos = 0; pos < order_.size(); ++pos) {
+      std::uint32_t id = order_[pos];
+      if (id && !o.contains(vertex_type::from_slot(ctx_, id))) remove(vertex_type::from_slot(ctx_, id));
+    }
+    for (std::uint32_t id : o.order_)
+      if (id) add(vertex_type::from_slot(o.ctx_, id), where{});
+  }
+  void release_all() noexcept {
+    for (std::uint32_t id : order_)
+      if (id) ctx_->release(id);
+  }
+
+  context_type* ctx_ = nullptr;
+  std::vector<std::uint32_t> order_;
+  std::vector<std::uint32_t> index_;
+  std::size_t count_ = 0;
+  std::size_t holes_ = 0;
+  unsigned index_bits_ = 0;
+  mutable unsigned iterating_ = 0;
+};
+
+//! `is v in M`
+template <class Tr>
+bool is_in(const vertex<Tr>& v, const mesh<Tr>& m, where = where::here()) noexcept {
+  return m.contains(v);
+}
+
+//! `synchronise M;`: save the current state of every member as its old
+//! state (properties, neighbourhood with records, flag).
+template <class Tr>
+void synchronise(const mesh<Tr>& m, where = where::here()) {
+  context<Tr>* ctx = m.ctx();
+  for (std::uint32_t id : m.slots()) {
+    if (!id) continue;
+    ctx->old_nb(id) = ctx->nb(id);
+    ctx->old_props(id) = ctx->props(id);
+  }
+}
+template <class Tr>
+void synchronize(const mesh<Tr>& m, where w = where::here()) {
+  synchronise(m, w);
+}
+
+}  // namespace vv

@@ -1,0 +1,27 @@
+// The program's view of its host (LANGUAGE.md section 8): run settings the
+// program writes and the host reads.
+#pragma once
+
+namespace vv {
+
+struct proxy {
+  unsigned steps = 0;         //!< steps the host's "run" command performs
+  unsigned delay_msec = 0;    //!< pause between animated steps
+  bool no_animate = false;    //!< the host ignores "animate"
+  bool record_frame = false;  //!< the host saves a PNG after each step
+  void* viewer = nullptr;     //!< the host's canvas, opaque to programs
+
+  //! The box the view must show (set by setViewVolume).
+  bool has_view_volume = false;
+  double view_min[3] = {0, 0, 0};
+  double view_max[3] = {0, 0, 0};
+
+  void setViewVolume(double maxx, double maxy, double maxz, double minx, double miny,
+                     double minz) noexcept {
+    has_view_volume = true;
+    view_max[0] = maxx, view_max[1] = maxy, view_max[2] = maxz;
+    view_min[0] = minx, view_min[1] = miny, view_min[2] = minz;
+  }
+};
+
+}  // namespace vv

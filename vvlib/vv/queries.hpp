@@ -1,0 +1,104 @@
+// Neighbourhood queries and selections (LANGUAGE.md section 4, first
+// table). Each works on a current state (`v`) or an old one (`` `v ``); a
+// null target is an error, a missing neighbour gives the null vertex.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+
+#include "detail/nb_access.hpp"
+
+namespace vv {
+
+//! `valence v`
+template <class V, detail::if_vertex_like<V> = 0>
+std::size_t valence(const V& v, where w = where::here()) {
+  return detail::view(v, "valence", w).nb->size();
+}
+
+//! `is x in v`: x is a neighbour of v.
+template <class V, detail::if_vertex_like<V> = 0>
+bool is_in(const vertex<typename V::traits_type>& x, const V& v, where w = where::here()) {
+  auto s = detail::view(v, "is ... in", w);
+  std::uint32_t id = detail::slot_in(x, s.ctx);
+  return id != 0 && detail::find(*s.nb, id) >= 0;
+}
+
+//! `any in v`: the first neighbour, or null when there is none.
+template <class V, detail::if_vertex_like<V> = 0>
+vertex<typename V::traits_type> any_in(const V& v, where w = where::here()) {
+  using vx = vertex<typename V::traits_type>;
+  auto s = detail::view(v, "any in", w);
+  if (s.nb->empty()) return vx();
+  return vx::from_slot(s.ctx, detail::entry_id((*s.nb)[0]));
+}
+
+//! `next(i)to x in v` (i = 1: `nextto`): the neighbour i places after x
+//! in v's rotation, counted cyclically (a negative i counts backwards); null
+//! when x is not a neighbour of v.
+template <class V, detail::if_vertex_like<V> = 0>
+vertex<typename V::traits_type> next_to(const vertex<typename V::traits_type>& x, const V& v,
+                                        long i, where w = where::here()) {
+  using vx = vertex<typename V::traits_type>;
+  auto s = detail::view(v, "nextto", w);
+  std::int32_t pos = detail::find(*s.nb, detail::slot_in(x, s.ctx));
+  if (pos < 0 || !x) return vx();
+  long n = static_cast<long>(s.nb->size());
+  long k = ((pos + i) % n + n) % n;
+  return vx::from_slot(s.ctx, detail::entry_id((*s.nb)[static_cast<std::uint32_t>(k)]));
+}
+template <class V, detail::if_vertex_like<V> = 0>
+vertex<typename V::traits_type> next_to(const vertex<typename V::traits_type>& x, const V& v,
+                                        where w = where::here()) {
+  return next_to(x, v, 1L, w);
+}
+
+//! `prev(i)to x in v` (i = 1: `prevto`).
+template <class V, detail::if_vertex_like<V> = 0>
+vertex<typename V::traits_type> prev_to(const vertex<typename V::traits_type>& x, const V& v,
+                                        long i, where w = where::here()) {
+  return next_to(x, v, -i, w);
+}
+template <class V, detail::if_vertex_like<V> = 0>
+vertex<typename V::traits_type> prev_to(const vertex<typename V::traits_type>& x, const V& v,
+                                        where w = where::here()) {
+  return next_to(x, v, -1L, w);
+}
+
+//! `flagged in v`: the neighbour at the flagged position, or null.
+template <class V, detail::if_vertex_like<V> = 0>
+vertex<typename V::traits_type> flagged_in(const V& v, where w = where::here()) {
+  using vx = vertex<typename V::traits_type>;
+  auto s = detail::view(v, "flagged in", w);
+  std::int32_t f = s.nb->flag();
+  if (f < 0) return vx();
+  return vx::from_slot(s.ctx, detail::entry_id((*s.nb)[static_cast<std::uint32_t>(f)]));
+}
+
+namespace detail {
+template <class V>
+vertex<typename V::traits_type> beside_flag(const V& v, int step, const char* op,
+                                            const where& w) {
+  using vx = vertex<typename V::traits_type>;
+  auto s = view(v, op, w);
+  std::int32_t f = s.nb->flag();
+  if (f < 0) throw error(w, op, "no flag is set in the neighbourhood");
+  std::int32_t n = static_cast<std::int32_t>(s.nb->size());
+  std::uint32_t k = static_cast<std::uint32_t>(((f + step) % n + n) % n);
+  return vx::from_slot(s.ctx, entry_id((*s.nb)[k]));
+}
+}  // namespace detail
+
+//! `nextto flag in v`
+template <class V, detail::if_vertex_like<V> = 0>
+vertex<typename V::traits_type> next_to_flag(const V& v, where w = where::here()) {
+  return detail::beside_flag(v, 1, "nextto flag", w);
+}
+
+//! `prevto flag in v`
+template <class V, detail::if_vertex_like<V> = 0>
+vertex<typename V::traits_type> prev_to_flag(const V& v, where w = where::here()) {
+  return detail::beside_flag(v, -1, "prevto flag", w);
+}
+
+}  // namespace vv

@@ -1,0 +1,146 @@
+// Vertex handles: counted references to a vertex of a context, and the
+// read-only view of a vertex's synchronised (old) state.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <functional>
+#include <ostream>
+#include <string>
+
+#include "context.hpp"
+#include "error.hpp"
+
+namespace vv {
+
+template <class Tr>
+class vertex {
+ public:
+  using traits_type = Tr;
+  using context_type = context<Tr>;
+  using props_type = typename Tr::vertex_props;
+
+  //! The null vertex (label 0).
+  vertex() noexcept = default;
+  vertex(std::nullptr_t) noexcept {}  // `vertex v = 0;`
+  vertex(const vertex& o) noexcept : ctx_(o.ctx_), id_(o.id_) {
+    if (id_) ctx_->retain(id_);
+  }
+  vertex(vertex&& o) noexcept : ctx_(o.ctx_), id_(o.id_) { o.id_ = 0; }
+  vertex& operator=(const vertex& o) noexcept {
+    if (o.id_) o.ctx_->retain(o.id_);
+    drop();
+    ctx_ = o.ctx_;
+    id_ = o.id_;
+    return *this;
+  }
+  vertex& operator=(vertex&& o) noexcept {
+    if (this != &o) {
+      drop();
+      ctx_ = o.ctx_;
+      id_ = o.id_;
+      o.id_ = 0;
+    }
+    return *this;
+  }
+  ~vertex() { drop(); }
+
+  explicit operator bool() const noexcept { return id_ != 0; }
+  //! The label (creation order, 0 for null).
+  unsigned label() const noexcept { return id_ ? ctx_->label(id_) : 0u; }
+
+  //! The current properties (`v$name`); null is an error.
+  props_type& props(where w = where::here()) const {
+    if (!id_) throw error(w, "$", "property access on the null vertex");
+    return ctx_->props(id_);
+  }
+  props_type* operator->() const { return &props(where{}); }
+
+  // ---- for the library: the storage behind the handle ----
+  context_type* ctx() const noexcept { return ctx_; }
+  std::uint32_t slot() const noexcept { return id_; }
+  //! A new counted handle to a slot.
+  static vertex from_slot(context_type* c, std::uint32_t id) noexcept {
+    if (id) c->retain(id);
+    return vertex(c, id);
+  }
+
+  friend bool operator==(const vertex& a, const vertex& b) noexcept {
+    return a.id_ == b.id_ && (a.id_ == 0 || a.ctx_ == b.ctx_);
+  }
+  friend bool operator!=(const vertex& a, const vertex& b) noexcept { return !(a == b); }
+  friend bool operator<(const vertex& a, const vertex& b) noexcept { return a.label() < b.label(); }
+  friend bool operator>(const vertex& a, const vertex& b) noexcept { return b < a; }
+  friend bool operator<=(const vertex& a, const vertex& b) noexcept { return !(b < a); }
+  friend bool operator>=(const vertex& a, const vertex& b) noexcept { return !(a < b); }
+  friend std::ostream& operator<<(std::ostream& os, const vertex& v) {
+    return os << "vertex " << v.label();
+  }
+
+ private:
+  vertex(context_type* c, std::uint32_t id) noexcept : ctx_(c), id_(id) {}
+  void drop() noexcept {
+    if (id_) ctx_->release(id_);
+    id_ = 0;
+  }
+
+  context_type* ctx_ = nullptr;
+  std::uint32_t id_ = 0;
+};
+
+//! `labelof v`
+template <class Tr>
+unsigned label_of(const vertex<Tr>& v) noexcept {
+  return v.label();
+}
+
+//! How errors name a vertex.
+template <class Tr>
+std::string name_of(const vertex<Tr>& v) {
+  return v ? "vertex " + std::to_string(v.label()) : std::string("the null vertex");
+}
+
+//! `` `v ``: the state saved by the last synchronise of a mesh holding v.
+//! Read-only; neighbourhood queries on it walk the old neighbourhood.
+template <class Tr>
+class old_vertex {
+ public:
+  using traits_type = Tr;
+  using props_type = typename Tr::vertex_props;
+
+  old_vertex(const vertex<Tr>& v, where w) : v_(v) {
+    if (!v) throw error(w, "`", "old state of the null vertex");
+    if (v.ctx()->strict_old_state && !synchronised())
+      throw error(w, "`", name_of(v) + " has never been synchronised (strict mode)");
+  }
+
+  const props_type& props(where = where::here()) const { return v_.ctx()->old_props(v_.slot()); }
+  const props_type* operator->() const { return &props(); }
+  //! The vertex itself (edits through `` `v `` change its current state).
+  const vertex<Tr>& current() const noexcept { return v_; }
+  bool synchronised() const {
+    return v_.ctx()->old_nb(v_.slot()).flag() != context<Tr>::nb_type::never_synchronised;
+  }
+
+ private:
+  vertex<Tr> v_;
+};
+
+template <class Tr>
+old_vertex<Tr> old(const vertex<Tr>& v, where w = where::here()) {
+  return old_vertex<Tr>(v, w);
+}
+//! `` ``v `` is `` `v ``: the old state has no old state of its own.
+template <class Tr>
+old_vertex<Tr> old(const old_vertex<Tr>& v, where = where::here()) {
+  return v;
+}
+
+}  // namespace vv
+
+template <class Tr>
+struct std::hash<vv::vertex<Tr>> {
+  std::size_t operator()(const vv::vertex<Tr>& v) const noexcept {
+    return std::hash<unsigned>()(v.label());
+  }
+};
