@@ -15,8 +15,10 @@ auto& record_at(context<Tr>* ctx, NB& nb, const vertex<Tr>& a, const vertex<Tr>&
                 const char* op, const where& w) {
   std::int32_t pos = find(nb, slot_in(b, ctx));
   if (pos < 0 || !b)
-    throw error(w, op, "there is no half-edge from " + name_of(a) + " to " + name_of(b) + ": " +
-                           name_of(b) + " is not a neighbour");
+    raise(w, op, [&] {
+      return "there is no half-edge from " + name_of(a) + " to " + name_of(b) + ": " + name_of(b) +
+             " is not a neighbour";
+    });
   using entry_traits = typename context<Tr>::entry_traits;
   return entry_traits::rec(nb[static_cast<std::uint32_t>(pos)], ctx->empty_record());
 }
@@ -64,9 +66,8 @@ typename Tr::edge_props& edge(const vertex<Tr>& a, const vertex<Tr>& b, where w 
 template <class Tr>
 const typename Tr::edge_props& edge(const old_vertex<Tr>& a, const vertex<Tr>& b,
                                     where w = where::here()) {
-  const vertex<Tr>& v = a.current();
-  auto& nb = v.ctx()->old_nb(v.slot());
-  return detail::record_at(v.ctx(), nb, v, b, "^", w);
+  auto& nb = a.ctx()->old_nb(a.slot());
+  return detail::record_at(a.ctx(), nb, a.current(), b, "^", w);
 }
 
 //! `(a|b)`: the record a->b; at the end of the full expression that uses

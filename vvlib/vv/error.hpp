@@ -53,4 +53,13 @@ class error : public std::runtime_error {
   int line_;
 };
 
+//! Throws vv::error with the problem text make_problem() builds. Kept out
+//! of line and marked cold so that the checks on hot paths inline to a
+//! test and a call: the message is only built when it is needed.
+template <class MakeProblem>
+[[noreturn, gnu::noinline, gnu::cold]] void raise(const where& w, const char* operation,
+                                                 MakeProblem&& make_problem) {
+  throw error(w, operation, make_problem());
+}
+
 }  // namespace vv

@@ -3,11 +3,10 @@
 // alive while in it) but does not own them: a vertex may be in many meshes.
 //
 // Representation: `order_` lists member slots in insertion order, with 0 for
-// a removed member (a hole); `index_` is an open-addressing hash table
-// (linear probing, load at most 1/2) from slot to position in `order_`,
-// storing position + 1 so that 0 means "empty". Holes are squeezed out when
-// they outnumber the members, but never during an iteration, so a loop's
-// positions stay valid (LANGUAGE.md section 6).
+// a removed member (a hole); `index_` maps a slot to its position there
+// (detail/member_index.hpp). Holes are squeezed out when they outnumber the
+// members, but never during an iteration, so a loop's positions stay valid
+// (LANGUAGE.md section 6).
 #pragma once
 
 #include <algorithm>
@@ -17,6 +16,7 @@
 #include <utility>
 #include <vector>
 
+#include "detail/member_index.hpp"
 #include "vertex.hpp"
 
 namespace vv {
@@ -35,12 +35,10 @@ class mesh : public Tr::mesh_props {
   mesh(const mesh& o) : props_type(o), ctx_(o.ctx_) { copy_members(o); }
   mesh(mesh&& o) noexcept
       : props_type(std::move(static_cast<props_type&>(o))), ctx_(o.ctx_),
-        order_(std::move(o.order_)), index_(std::move(o.index_)), count_(o.count_),
-        holes_(o.holes_), index_bits_(o.index_bits_) {
+        order_(std::move(o.order_)), count_(o.count_), holes_(o.holes_) {
+    index_.swap(o.index_);
     o.order_.clear();
-    o.index_.clear();
     o.count_ = o.holes_ = 0;
-    o.index_bits_ = 0;
   }
   //! `M = N`: the same set (vertices are shared) and the same properties.
   mesh& operator=(const mesh& o) {
@@ -66,24 +64,22 @@ class mesh : public Tr::mesh_props {
 
   //! `add v to M;` (no effect if v is already a member)
   void add(const vertex_type& v, where w = where::here()) {
-    if (!v) throw error(w, "add", "cannot add the null vertex to a mesh");
+    if (!v) raise(w, "add", [] { return std::string("cannot add the null vertex to a mesh"); });
     adopt_context(v, w);
     if (find_position(v.slot()) >= 0) return;
     ctx_->retain(v.slot());
-    if ((count_ + 1) * 2 > index_.size()) rehash(index_.empty() ? 16 : index_.size() * 2);
     order_.push_back(v.slot());
-    insert_index(v.slot(), order_.size() - 1);
     ++count_;
+    index_.insert(v.slot(), order_.size() - 1, order_, count_, slot_bound());
   }
 
   //! `remove v from M;` (no effect if v is not a member)
   void remove(const vertex_type& v, where = where::here()) {
     if (!v || v.ctx() != ctx_) return;
-    std::size_t s;
-    if (!find_index_slot(v.slot(), s)) return;
-    std::size_t pos = index_[s] - 1;
-    erase_index_slot(s);
-    order_[pos] = 0;
+    std::ptrdiff_t pos = find_position(v.slot());
+    if (pos < 0) return;
+    index_.erase(v.slot(), order_);
+    order_[static_cast<std::size_t>(pos)] = 0;
     ++holes_;
     --count_;
     ctx_->release(v.slot());
@@ -98,6 +94,11 @@ class mesh : public Tr::mesh_props {
   //! `merge M with N;` / `M += N`
   void merge(const mesh& o, where w = where::here()) {
     if (&o == this) return;
+    // Room for all of o at once (at least 1.5x growth, so repeated small
+    // merges stay linear): a big merge then leaves no slack behind.
+    std::size_t needed = order_.size() + o.count_;
+    if (needed > order_.capacity())
+      order_.reserve(std::max(needed, order_.capacity() + order_.capacity() / 2));
     for (std::uint32_t id : o.order_)
       if (id) add(vertex_type::from_slot(o.ctx_, id), w);
   }
@@ -109,7 +110,7 @@ class mesh : public Tr::mesh_props {
   //! `clear M;`
   void clear() noexcept {
     release_all();
-    std::fill(index_.begin(), index_.end(), 0u);
+    index_.clear();
     if (iterating_ > 0) {
       std::fill(order_.begin(), order_.end(), 0u);
       holes_ = order_.size();
@@ -134,7 +135,7 @@ class mesh : public Tr::mesh_props {
   context_type* ctx() const noexcept { return ctx_; }
   //! Bytes held by the set (for memory reports).
   std::size_t storage_bytes() const noexcept {
-    return order_.capacity() * sizeof(std::uint32_t) + index_.capacity() * sizeof(std::uint32_t);
+    return order_.capacity() * sizeof(std::uint32_t) + index_.bytes();
   }
 
   // ---- iteration: members present at the start, in insertion order,
@@ -173,64 +174,21 @@ class mesh : public Tr::mesh_props {
   const std::vector<std::uint32_t>& slots() const noexcept { return order_; }
 
  private:
-  static std::size_t hash(std::uint32_t id, unsigned bits) noexcept {
-    return static_cast<std::size_t>((id * 2654435769u) >> (32 - bits));
-  }
-
   void adopt_context(const vertex_type& v, const where& w) {
     if (!ctx_) ctx_ = v.ctx();
     else if (v.ctx() != ctx_)
-      throw error(w, "add", name_of(v) + " belongs to another context than the mesh");
+      raise(w, "add", [&] { return name_of(v) + " belongs to another context than the mesh"; });
   }
 
-  bool find_index_slot(std::uint32_t id, std::size_t& s) const noexcept {
-    if (index_.empty()) return false;
-    std::size_t mask = index_.size() - 1;
-    for (s = hash(id, index_bits_);; s = (s + 1) & mask) {
-      std::uint32_t p = index_[s];
-      if (p == 0) return false;
-      if (order_[p - 1] == id) return true;
-    }
-  }
-  std::ptrdiff_t find_position(std::uint32_t id) const noexcept {
-    std::size_t s;
-    return find_index_slot(id, s) ? static_cast<std::ptrdiff_t>(index_[s]) - 1 : -1;
-  }
-  void insert_index(std::uint32_t id, std::size_t pos) noexcept {
-    std::size_t mask = index_.size() - 1;
-    std::size_t s = hash(id, index_bits_);
-    while (index_[s] != 0) s = (s + 1) & mask;
-    index_[s] = static_cast<std::uint32_t>(pos + 1);
-  }
-  // Backward-shift deletion keeps every probe sequence unbroken.
-  void erase_index_slot(std::size_t s) noexcept {
-    std::size_t mask = index_.size() - 1;
-    std::size_t hole = s;
-    for (std::size_t j = (s + 1) & mask; index_[j] != 0; j = (j + 1) & mask) {
-      std::size_t home = hash(order_[index_[j] - 1], index_bits_);
-      // Move j into the hole unless its home lies cyclically in (hole, j].
-      bool stays = hole <= j ? (home > hole && home <= j) : (home > hole || home <= j);
-      if (!stays) {
-        index_[hole] = index_[j];
-        hole = j;
-      }
-    }
-    index_[hole] = 0;
-  }
-  void rehash(std::size_t capacity) {
-    index_bits_ = 0;
-    while ((std::size_t(1) << index_bits_) < capacity) ++index_bits_;
-    index_.assign(std::size_t(1) << index_bits_, 0u);
-    for (std::size_t pos = 0; pos < order_.size(); ++pos)
-      if (order_[pos]) insert_index(order_[pos], pos);
-  }
+  std::ptrdiff_t find_position(std::uint32_t id) const noexcept { return index_.find(id, order_); }
+  std::size_t slot_bound() const noexcept { return ctx_ ? ctx_->slot_count() : 0; }
 
   // Squeeze out holes once they outnumber the members.
   void compact_if_sparse() {
     if (iterating_ > 0 || holes_ < 64 || holes_ < count_) return;
     order_.erase(std::remove(order_.begin(), order_.end(), 0u), order_.end());
     holes_ = 0;
-    rehash(std::max<std::size_t>(16, index_.size()));
+    index_.rebuild(order_, count_, slot_bound());
   }
   void end_iteration() const noexcept {
     if (--iterating_ == 0) const_cast<mesh*>(this)->compact_if_sparse();
@@ -241,7 +199,7 @@ class mesh : public Tr::mesh_props {
     for (std::uint32_t id : o.order_)
       if (id) order_.push_back(id), ctx_->retain(id);
     count_ = order_.size();
-    if (count_) rehash(std::max<std::size_t>(16, o.index_.size()));
+    if (count_) index_.rebuild(order_, count_, slot_bound());
   }
   void swap_members(mesh& o) noexcept {
     std::swap(ctx_, o.ctx_);
@@ -249,7 +207,6 @@ class mesh : public Tr::mesh_props {
     index_.swap(o.index_);
     std::swap(count_, o.count_);
     std::swap(holes_, o.holes_);
-    std::swap(index_bits_, o.index_bits_);
   }
   // M = N inside a loop over M: keep positions, change membership only.
   void assign_during_iteration(const mesh& o) {
@@ -267,10 +224,9 @@ class mesh : public Tr::mesh_props {
 
   context_type* ctx_ = nullptr;
   std::vector<std::uint32_t> order_;
-  std::vector<std::uint32_t> index_;
+  detail::member_index index_;
   std::size_t count_ = 0;
   std::size_t holes_ = 0;
-  unsigned index_bits_ = 0;
   mutable unsigned iterating_ = 0;
 };
 

@@ -41,10 +41,12 @@ vertex<typename V::traits_type> next_to(const vertex<typename V::traits_type>& x
                                         long i, where w = where::here()) {
   using vx = vertex<typename V::traits_type>;
   auto s = detail::view(v, "nextto", w);
+  // A null or foreign x has slot 0, which no entry holds.
   std::int32_t pos = detail::find(*s.nb, detail::slot_in(x, s.ctx));
-  if (pos < 0 || !x) return vx();
+  if (pos < 0) return vx();
   long n = static_cast<long>(s.nb->size());
-  long k = ((pos + i) % n + n) % n;
+  long k = pos + i;
+  if (k < 0 || k >= n) k = (k % n + n) % n;
   return vx::from_slot(s.ctx, detail::entry_id((*s.nb)[static_cast<std::uint32_t>(k)]));
 }
 template <class V, detail::if_vertex_like<V> = 0>

@@ -51,7 +51,7 @@ class vertex {
 
   //! The current properties (`v$name`); null is an error.
   props_type& props(where w = where::here()) const {
-    if (!id_) throw error(w, "$", "property access on the null vertex");
+    if (!id_) raise(w, "$", [] { return std::string("property access on the null vertex"); });
     return ctx_->props(id_);
   }
   props_type* operator->() const { return &props(where{}); }
@@ -102,28 +102,37 @@ std::string name_of(const vertex<Tr>& v) {
 
 //! `` `v ``: the state saved by the last synchronise of a mesh holding v.
 //! Read-only; neighbourhood queries on it walk the old neighbourhood.
+//!
+//! A view for use within an expression (as a translated program uses it):
+//! it does not keep the vertex alive, so do not store it beyond the handle
+//! it came from.
 template <class Tr>
 class old_vertex {
  public:
   using traits_type = Tr;
   using props_type = typename Tr::vertex_props;
 
-  old_vertex(const vertex<Tr>& v, where w) : v_(v) {
-    if (!v) throw error(w, "`", "old state of the null vertex");
-    if (v.ctx()->strict_old_state && !synchronised())
-      throw error(w, "`", name_of(v) + " has never been synchronised (strict mode)");
+  old_vertex(const vertex<Tr>& v, where w) : ctx_(v.ctx()), id_(v.slot()) {
+    if (!v) raise(w, "`", [] { return std::string("old state of the null vertex"); });
+    if (ctx_->strict_old_state && !synchronised())
+      raise(w, "`", [&] { return name_of(v) + " has never been synchronised (strict mode)"; });
   }
 
-  const props_type& props(where = where::here()) const { return v_.ctx()->old_props(v_.slot()); }
-  const props_type* operator->() const { return &props(); }
+  const props_type& props(where = where::here()) const noexcept { return ctx_->old_props(id_); }
+  const props_type* operator->() const noexcept { return &props(); }
   //! The vertex itself (edits through `` `v `` change its current state).
-  const vertex<Tr>& current() const noexcept { return v_; }
-  bool synchronised() const {
-    return v_.ctx()->old_nb(v_.slot()).flag() != context<Tr>::nb_type::never_synchronised;
+  vertex<Tr> current() const noexcept { return vertex<Tr>::from_slot(ctx_, id_); }
+  bool synchronised() const noexcept {
+    return ctx_->old_nb(id_).flag() != context<Tr>::nb_type::never_synchronised;
   }
+
+  // ---- for the library ----
+  context<Tr>* ctx() const noexcept { return ctx_; }
+  std::uint32_t slot() const noexcept { return id_; }
 
  private:
-  vertex<Tr> v_;
+  context<Tr>* ctx_;
+  std::uint32_t id_;
 };
 
 template <class Tr>

@@ -31,24 +31,23 @@ struct nb_view {
 
 template <class Tr>
 nb_view<Tr> view(const vertex<Tr>& v, const char* op, const where& w) {
-  if (!v) throw error(w, op, "the target is the null vertex");
+  if (!v) raise(w, op, [] { return std::string("the target is the null vertex"); });
   return {v.ctx(), &v.ctx()->nb(v.slot())};
 }
 template <class Tr>
-nb_view<Tr> view(const old_vertex<Tr>& v, const char*, const where&) {
-  const vertex<Tr>& c = v.current();
-  return {c.ctx(), &c.ctx()->old_nb(c.slot())};
+nb_view<Tr> view(const old_vertex<Tr>& v, const char*, const where&) noexcept {
+  return {v.ctx(), &v.ctx()->old_nb(v.slot())};
 }
 
 //! The vertex whose current state an edit changes (`` `v `` as an edit
 //! target means v itself).
 template <class Tr>
 const vertex<Tr>& edit_target(const vertex<Tr>& v, const char* op, const where& w) {
-  if (!v) throw error(w, op, "the target is the null vertex");
+  if (!v) raise(w, op, [] { return std::string("the target is the null vertex"); });
   return v;
 }
 template <class Tr>
-const vertex<Tr>& edit_target(const old_vertex<Tr>& v, const char*, const where&) {
+vertex<Tr> edit_target(const old_vertex<Tr>& v, const char*, const where&) {
   return v.current();
 }
 
@@ -78,12 +77,12 @@ std::uint32_t slot_in(const vertex<Tr>& x, const context<Tr>* ctx) noexcept {
 template <class Tr, class NB>
 void check_insertable(const vertex<Tr>& x, const vertex<Tr>& v, const NB& nb, const char* op,
                       const where& w) {
-  if (!x) throw error(w, op, "cannot insert the null vertex into the neighbourhood of " + name_of(v));
+  if (!x) raise(w, op, [&] { return "cannot insert the null vertex into the neighbourhood of " + name_of(v); });
   if (x.ctx() != v.ctx())
-    throw error(w, op, name_of(x) + " and " + name_of(v) + " belong to different contexts");
-  if (x == v) throw error(w, op, name_of(v) + " cannot be its own neighbour");
+    raise(w, op, [&] { return name_of(x) + " and " + name_of(v) + " belong to different contexts"; });
+  if (x == v) raise(w, op, [&] { return name_of(v) + " cannot be its own neighbour"; });
   if (find(nb, x.slot()) >= 0)
-    throw error(w, op, name_of(x) + " is already a neighbour of " + name_of(v));
+    raise(w, op, [&] { return name_of(x) + " is already a neighbour of " + name_of(v); });
 }
 
 }  // namespace vv::detail

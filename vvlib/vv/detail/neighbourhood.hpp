@@ -61,10 +61,14 @@ class neighbourhood {
   neighbourhood() noexcept = default;
   neighbourhood(const neighbourhood& o) : flag_(o.flag_) { assign(o.data(), o.size_); }
   neighbourhood& operator=(const neighbourhood& o) {
-    if (this != &o) {
-      assign(o.data(), o.size_);
-      flag_ = o.flag_;
+    if (this == &o) return *this;
+    if (std::is_trivially_copyable<Entry>::value && size_ <= K && o.size_ <= K) {
+      // Both inline (the common case, e.g. in synchronise): copy the bytes.
+      std::memcpy(static_cast<void*>(this), static_cast<const void*>(&o), sizeof *this);
+      return *this;
     }
+    assign(o.data(), o.size_);
+    flag_ = o.flag_;
     return *this;
   }
   ~neighbourhood() { release(); }
