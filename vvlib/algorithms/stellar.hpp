@@ -2,8 +2,10 @@
 // meshes with symmetric, counter-clockwise neighbourhoods (Velho's stellar
 // subdivision grammars are sequences of these).
 //
-// Naming an edge a-b: l = nextto b in a and r = prevto b in a are the third
-// corners of the two triangles (a, b, l) and (a, r, b) beside it.
+// A counter-clockwise face (.., p, c, n, ..) has n immediately before p in
+// the rotation of its corner c. So, naming an edge a-b, l = nextto b in a
+// and r = prevto b in a are the third corners of the two triangles
+// (a, b, l) and (a, r, b) beside it.
 #pragma once
 
 #include <vector>
@@ -58,14 +60,15 @@ class EdgeSplit {
     V x = Insert<V>()(a, b, w);  // x* = {a, b}
     using P = typename V::props_type;
     if constexpr (vv::detail::has_pos<P>::value) x->pos = (a->pos + b->pos) * 0.5;
-    // Around x, counter-clockwise: a, r, b, l.
+    // The triangles (a, x, l), (x, b, l), (a, r, x), (x, r, b): around x
+    // a, r, b, l; around r, x comes after b; around l, after a.
     if (r && r != b && vv::is_in(a, r, w) && vv::is_in(b, r, w)) {
       vv::splice_after(r, a, x, w);
-      vv::splice_after(x, a, r, w);
+      vv::splice_after(x, b, r, w);
     }
     if (l && l != b && l != r && vv::is_in(a, l, w) && vv::is_in(b, l, w)) {
       vv::splice_after(l, b, x, w);
-      vv::splice_after(x, b, l, w);
+      vv::splice_after(x, a, l, w);
     }
     return x;
   }
@@ -83,10 +86,11 @@ class Flip {
     if (!l || !r || l == r || l == b || r == b) return false;
     if (vv::prev_to(a, b, w) != l || vv::next_to(a, b, w) != r) return false;  // not two triangles
     if (vv::is_in(r, l, w) || vv::is_in(l, r, w)) return false;
+    // The new triangles (a, r, l) and (r, b, l).
     vv::erase_from(b, a, w);
     vv::erase_from(a, b, w);
-    vv::splice_after(l, a, r, w);  // around r: a, l, b
-    vv::splice_after(r, b, l, w);  // around l: b, r, a
+    vv::splice_after(l, b, r, w);  // around r: b, l, a
+    vv::splice_after(r, a, l, w);  // around l: a, r, b
     return true;
   }
 };
@@ -102,8 +106,7 @@ class Centroid {
     detail::require_edge(a, b, "Centroid", w);
     std::vector<V> face = detail::face_of(a, b, "Centroid", w);
     V x = a.ctx()->new_vertex();
-    std::vector<V> around(face.rbegin(), face.rend());  // x sees the face clockwise
-    vv::make_nb_from(x, around, w);
+    vv::make_nb_from(x, face, w);  // the triangles (face[i], face[i+1], x)
     const std::size_t k = face.size();
     for (std::size_t i = 0; i < k; ++i)  // around face[i]: face[i+1], x, face[i-1]
       vv::splice_after(x, face[(i + 1) % k], face[i], w);
