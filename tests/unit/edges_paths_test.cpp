@@ -92,6 +92,8 @@ TEST_F(Edges, LocalEdgeValue) {
   EXPECT_EQ(vv::edge(p[4], p[0]).mark, 4);
   G::edge f = vv::edge(p[4], p[0]);
   f.b = true;
+  EXPECT_TRUE(f.b);
+  EXPECT_EQ(f.mark, 4);
   EXPECT_FALSE(vv::edge(p[4], p[0]).b);
 }
 

@@ -516,6 +516,7 @@ TEST(MeshSynchronise, SavesPropertiesNeighbourhoodRecordsAndFlagOfMembers) {
   EXPECT_EQ(a->c, 2.5);
   EXPECT_EQ(nb_labels(a), (Labels{d.label(), b.label()}));
   EXPECT_EQ(vv::edge(a, b).mark, 40);
+  EXPECT_TRUE(vv::edge(vv::old(a), b) != vv::edge(a, b));
   EXPECT_EQ(vv::flagged_in(a), d);
   EXPECT_EQ(nb_labels(b), Labels{});
 
@@ -904,7 +905,7 @@ TEST(ForallMesh, RemovedAndReAddedBeforeItsTurnIsNotVisited) {
 TEST(ForallMesh, ClearingTheMeshEndsTheVisits) {
   G::context ctx;
   Mesh M(ctx);
-  for (int i = 1; i <= 5; ++i) M.add(tagged(ctx, i));
+  for (int i = 1; i <= 100; ++i) M.add(tagged(ctx, i));
   std::vector<int> seen;
   for (V v : vv::each(M)) {
     seen.push_back(v->tag);
@@ -953,6 +954,19 @@ TEST(ForallMesh, AssigningTheMeshInsideItsLoop) {
   EXPECT_TRUE(M.contains(vs[1]));
   EXPECT_TRUE(M.contains(vs[3]));
   EXPECT_TRUE(M.contains(vs[5]));
+  // Assigning a returned mesh (a move) inside the loop behaves the same.
+  seen.clear();
+  for (V v : vv::each(M)) {
+    seen.push_back(v->tag);
+    if (v->tag == 2) M = make_mesh_of(ctx, {vs[0], vs[1]}, 4);  // 4, 6 removed; 1 added
+  }
+  EXPECT_EQ(seen, std::vector<int>{2});
+  EXPECT_EQ(M.size(), 2u);
+  EXPECT_TRUE(M.contains(vs[0]));
+  EXPECT_TRUE(M.contains(vs[1]));
+  EXPECT_FALSE(M.contains(vs[3]));
+  EXPECT_FALSE(M.contains(vs[5]));
+  EXPECT_EQ(M.generation, 4);
 }
 
 TEST(ForallMesh, NestedLoopsOverTheSameMesh) {
@@ -986,6 +1000,28 @@ TEST(ForallMesh, NestedLoopRemovalIsSeenByTheOuterLoop) {
   EXPECT_EQ(outer, (std::vector<int>{1, 3, 5}));
   EXPECT_EQ(inner_visits, 6 + 5 + 4);
   EXPECT_EQ(tags_of(M), (std::vector<int>{1, 3, 5}));
+  EXPECT_NO_THROW(vv::check_invariants(M));
+}
+
+TEST(ForallMesh, MassRemovalInAnInnerLoopKeepsTheOuterLoopsPlace) {
+  // Enough removals that the set would squeeze out its holes if it could:
+  // it must not while the outer loop still runs.
+  G::context ctx;
+  Mesh M(ctx);
+  for (int i = 1; i <= 300; ++i) M.add(tagged(ctx, i));
+  std::vector<int> outer;
+  for (V a : vv::each(M)) {
+    outer.push_back(a->tag);
+    if (a->tag == 1) {
+      for (V b : vv::each(M))
+        if (b->tag > 1 && b->tag % 3 != 0) M.remove(b);
+      EXPECT_EQ(M.size(), 101u);
+    }
+  }
+  std::vector<int> expected{1};
+  for (int i = 3; i <= 300; i += 3) expected.push_back(i);
+  EXPECT_EQ(outer, expected);
+  EXPECT_EQ(tags_of(M), expected);
   EXPECT_NO_THROW(vv::check_invariants(M));
 }
 

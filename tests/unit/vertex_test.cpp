@@ -119,8 +119,8 @@ TEST(VertexReference, CopySharesTheVertex) {
 
 TEST(VertexReference, AssignmentRebindsNotCopies) {
   G::context ctx;
-  V a = ctx.new_vertex(VP{1, 1});
-  V b = ctx.new_vertex(VP{2, 2});
+  V a = ctx.new_vertex(VP{1, 1, Pt()});
+  V b = ctx.new_vertex(VP{2, 2, Pt()});
   V r = a;
   r = b;
   EXPECT_EQ(r, b);
@@ -159,7 +159,7 @@ struct Holder {
 };
 
 V make_child(G::context& ctx, V parent) {  // vertex as parameter and return type
-  V c = ctx.new_vertex(VP{parent->x + 1, parent->n});
+  V c = ctx.new_vertex(VP{parent->x + 1, parent->n, Pt()});
   vv::make_nb(c, {parent});
   return c;
 }
@@ -178,7 +178,7 @@ TEST(VertexReference, MemberIsNullUntilAssigned) {
 
 TEST(VertexReference, AsContainerElementParameterAndReturnType) {
   G::context ctx;
-  V root = ctx.new_vertex(VP{10, 3});
+  V root = ctx.new_vertex(VP{10, 3, Pt()});
   std::vector<V> chain{root};
   for (int i = 0; i < 3; ++i) chain.push_back(make_child(ctx, chain.back()));
   ASSERT_EQ(chain.size(), 4u);

@@ -33,38 +33,47 @@ vertex<typename V::traits_type> any_in(const V& v, where w = where::here()) {
   return vx::from_slot(s.ctx, detail::entry_id((*s.nb)[0]));
 }
 
+namespace detail {
+// The neighbour i places from x around v (cyclically; negative goes back).
+template <class V>
+vertex<typename V::traits_type> step_from(const vertex<typename V::traits_type>& x, const V& v,
+                                          long i, const char* op, const where& w) {
+  using vx = vertex<typename V::traits_type>;
+  auto s = view(v, op, w);
+  // A null or foreign x has slot 0, which no entry holds.
+  std::int32_t pos = find(*s.nb, slot_in(x, s.ctx));
+  if (pos < 0) return vx();
+  long n = static_cast<long>(s.nb->size());
+  long k = pos + i;
+  if (k < 0 || k >= n) k = (k % n + n) % n;
+  return vx::from_slot(s.ctx, entry_id((*s.nb)[static_cast<std::uint32_t>(k)]));
+}
+}  // namespace detail
+
 //! `next(i)to x in v` (i = 1: `nextto`): the neighbour i places after x
 //! in v's rotation, counted cyclically (a negative i counts backwards); null
 //! when x is not a neighbour of v.
 template <class V, detail::if_vertex_like<V> = 0>
 vertex<typename V::traits_type> next_to(const vertex<typename V::traits_type>& x, const V& v,
                                         long i, where w = where::here()) {
-  using vx = vertex<typename V::traits_type>;
-  auto s = detail::view(v, "nextto", w);
-  // A null or foreign x has slot 0, which no entry holds.
-  std::int32_t pos = detail::find(*s.nb, detail::slot_in(x, s.ctx));
-  if (pos < 0) return vx();
-  long n = static_cast<long>(s.nb->size());
-  long k = pos + i;
-  if (k < 0 || k >= n) k = (k % n + n) % n;
-  return vx::from_slot(s.ctx, detail::entry_id((*s.nb)[static_cast<std::uint32_t>(k)]));
+  return detail::step_from(x, v, i, "nextto", w);
 }
 template <class V, detail::if_vertex_like<V> = 0>
 vertex<typename V::traits_type> next_to(const vertex<typename V::traits_type>& x, const V& v,
                                         where w = where::here()) {
-  return next_to(x, v, 1L, w);
+  return detail::step_from(x, v, 1L, "nextto", w);
 }
 
 //! `prev(i)to x in v` (i = 1: `prevto`).
 template <class V, detail::if_vertex_like<V> = 0>
 vertex<typename V::traits_type> prev_to(const vertex<typename V::traits_type>& x, const V& v,
                                         long i, where w = where::here()) {
-  return next_to(x, v, -i, w);
+  return detail::step_from(x, v, -i, "prevto", w);
 }
 template <class V, detail::if_vertex_like<V> = 0>
 vertex<typename V::traits_type> prev_to(const vertex<typename V::traits_type>& x, const V& v,
                                         where w = where::here()) {
-  return next_to(x, v, -1L, w);
+  return detail::step_from(x, v, -1L, "prevto", w);
 }
 
 //! `flagged in v`: the neighbour at the flagged position, or null.

@@ -7,7 +7,9 @@
 // lists the chains, then the cycles, in the order the faces mention them.
 #pragma once
 
+#include <algorithm>
 #include <array>
+#include <limits>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -51,6 +53,15 @@ void build_from_faces(mesh<Tr>& m, const std::vector<std::array<double, 3>>& poi
         links[fill[face[i]]++] = {face[(i + 1) % k], face[(i + k - 1) % k]};
   }
 
+  // Where each vertex's list starts: at the next corner of the first face
+  // that lists the vertex first. The writers list each face from its first
+  // vertex and in the order of that vertex's list, so a file written by vv
+  // reads back to lists that write it out again byte for byte.
+  constexpr std::uint32_t none = std::numeric_limits<std::uint32_t>::max();
+  std::vector<std::uint32_t> start_at(n, none);
+  for (const auto& face : faces)
+    if (face.size() >= 2 && start_at[face[0]] == none) start_at[face[0]] = face[1];
+
   std::vector<std::vector<std::uint32_t>> rotation(n);
   std::vector<bool> placed;
   for (std::uint32_t b = 0; b < n; ++b) {
@@ -91,6 +102,8 @@ void build_from_faces(mesh<Tr>& m, const std::vector<std::array<double, 3>>& poi
       if (!placed[i] && !has_incoming(lb[i].first)) walk(i);
     for (std::size_t i = 0; i < count; ++i)  // what is left lies on cycles
       if (!placed[i]) walk(i);
+    auto start = std::find(out.begin(), out.end(), start_at[b]);
+    if (start != out.end()) std::rotate(out.begin(), start, out.end());
   }
 
   mesh<Tr> fresh(*ctx);

@@ -55,6 +55,50 @@ void set_fields_from(P& props, const pugi::xml_node& node, const io::text_file& 
   }
 }
 
+// What pugixml lets through but XML (or the format) forbids: text outside
+// the document element, a second top-level element, an attribute given
+// twice, text inside <mesh>, anything inside a <v> or <e>.
+inline void check_structure(const pugi::xml_document& doc, const io::text_file& file) {
+  // pugixml drops text before and after the document element; look at the
+  // raw text (a UTF-8 byte order mark may lead).
+  const std::string& text = file.text();
+  std::size_t lead = text.compare(0, 3, "\xEF\xBB\xBF") == 0 ? 3 : 0;
+  std::size_t first = text.find_first_not_of(" \t\r\n", lead);
+  if (first != std::string::npos && text[first] != '<')
+    file.fail(std::ptrdiff_t(first), "malformed XML: text before the <mesh> element");
+  std::size_t last_tag_end = text.rfind('>');
+  std::size_t trailing = text.find_first_not_of(" \t\r\n", last_tag_end + 1);
+  if (last_tag_end != std::string::npos && trailing != std::string::npos)
+    file.fail(std::ptrdiff_t(trailing), "malformed XML: text after the <mesh> element");
+  bool seen_root = false;
+  for (pugi::xml_node n : doc.children()) {
+    if (n.type() != pugi::node_element) continue;
+    if (seen_root)
+      file.fail(n.offset_debug(),
+                std::string("malformed XML: a second top-level element <") + n.name() + ">");
+    seen_root = true;
+  }
+  auto check_attributes = [&](const pugi::xml_node& e) {
+    for (pugi::xml_attribute a = e.first_attribute(); a; a = a.next_attribute())
+      for (pugi::xml_attribute b = a.next_attribute(); b; b = b.next_attribute())
+        if (std::strcmp(a.name(), b.name()) == 0)
+          file.fail(e.offset_debug(),
+                    std::string("malformed XML: attribute ") + a.name() + " is given twice");
+  };
+  pugi::xml_node root = doc.document_element();
+  check_attributes(root);
+  for (pugi::xml_node n : root.children()) {
+    if (n.type() == pugi::node_pcdata || n.type() == pugi::node_cdata)
+      file.fail(n.offset_debug(), "text inside <mesh> (expected only <v> and <e> elements)");
+    if (n.type() != pugi::node_element) continue;
+    check_attributes(n);
+    for (pugi::xml_node inner : n.children())
+      if (inner.type() == pugi::node_element || inner.type() == pugi::node_pcdata ||
+          inner.type() == pugi::node_cdata)
+        file.fail(inner.offset_debug(), std::string("unexpected content inside <") + n.name() + ">");
+  }
+}
+
 // Parses an unsigned vertex index of the file; fails on anything else.
 inline std::uint32_t parse_index(const std::string& token, std::size_t count,
                                  const std::function<void(const std::string&)>& fail) {
@@ -86,6 +130,7 @@ void parse_vvm(mesh<Tr>& m, const io::text_file& file) {
   pugi::xml_parse_result parsed = doc.load_buffer(file.text().data(), file.text().size(),
                                                   pugi::parse_default, pugi::encoding_utf8);
   if (!parsed) file.fail(parsed.offset, std::string("malformed XML: ") + parsed.description());
+  detail::check_structure(doc, file);
   pugi::xml_node root = doc.document_element();
   if (!root) file.fail(0, "no root element (expected <mesh>)");
   if (std::strcmp(root.name(), "mesh") != 0)
