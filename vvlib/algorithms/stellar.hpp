@@ -58,7 +58,7 @@ class EdgeSplit {
     detail::require_edge(a, b, "EdgeSplit", w);
     V l = vv::next_to(b, a, w), r = vv::prev_to(b, a, w);
     V x = Insert<V>()(a, b, w);  // x* = {a, b}
-    using P = typename V::props_type;
+    using P = typename V::traits_type::vertex_props;
     if constexpr (vv::detail::has_pos<P>::value) x->pos = (a->pos + b->pos) * 0.5;
     // The triangles (a, x, l), (x, b, l), (a, r, x), (x, r, b): around x
     // a, r, b, l; around r, x comes after b; around l, after a.
@@ -110,7 +110,7 @@ class Centroid {
     const std::size_t k = face.size();
     for (std::size_t i = 0; i < k; ++i)  // around face[i]: face[i+1], x, face[i-1]
       vv::splice_after(x, face[(i + 1) % k], face[i], w);
-    using P = typename V::props_type;
+    using P = typename V::traits_type::vertex_props;
     if constexpr (vv::detail::has_pos<P>::value) {
       auto sum = face[0]->pos;
       for (std::size_t i = 1; i < k; ++i) sum += face[i]->pos;

@@ -13,6 +13,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <string>
+#include <type_traits>
 #include <utility>
 #include <vector>
 
@@ -20,6 +21,13 @@
 #include "vertex.hpp"
 
 namespace vv {
+
+namespace detail {
+template <class Tr, class = void>
+struct has_default_context : std::false_type {};
+template <class Tr>
+struct has_default_context<Tr, std::void_t<decltype(Tr::context())>> : std::true_type {};
+}  // namespace detail
 
 template <class Tr>
 class mesh : public Tr::mesh_props {
@@ -29,9 +37,12 @@ class mesh : public Tr::mesh_props {
   using vertex_type = vertex<Tr>;
   using props_type = typename Tr::mesh_props;
 
-  //! A mesh that takes its context from the first vertex added.
-  mesh() = default;
-  explicit mesh(context_type& ctx) : ctx_(&ctx) {}
+  //! A mesh of the model's context when the traits name one (translated
+  //! programs), else of the context of the first vertex added.
+  mesh() : props_type() {
+    if constexpr (detail::has_default_context<Tr>::value) ctx_ = &Tr::context();
+  }
+  explicit mesh(context_type& ctx) : props_type(), ctx_(&ctx) {}
   mesh(const mesh& o) : props_type(o), ctx_(o.ctx_) { copy_members(o); }
   mesh(mesh&& o) noexcept
       : props_type(std::move(static_cast<props_type&>(o))), ctx_(o.ctx_),

@@ -13,12 +13,13 @@
 
 namespace vv {
 
+//! A handle may be declared while Tr is still incomplete (a property
+//! struct may hold vertices), so nothing here names Tr's members until used.
 template <class Tr>
 class vertex {
  public:
   using traits_type = Tr;
   using context_type = context<Tr>;
-  using props_type = typename Tr::vertex_props;
 
   //! The null vertex (label 0).
   vertex() noexcept = default;
@@ -50,11 +51,15 @@ class vertex {
   unsigned label() const noexcept { return id_ ? ctx_->label(id_) : 0u; }
 
   //! The current properties (`v$name`); null is an error.
-  props_type& props(where w = where::here()) const {
+  template <class T = Tr>
+  typename T::vertex_props& props(where w = where::here()) const {
     if (!id_) raise(w, "$", [] { return std::string("property access on the null vertex"); });
     return ctx_->props(id_);
   }
-  props_type* operator->() const { return &props(where{}); }
+  template <class T = Tr>
+  typename T::vertex_props* operator->() const {
+    return &props(where{});
+  }
 
   // ---- for the library: the storage behind the handle ----
   context_type* ctx() const noexcept { return ctx_; }
@@ -110,7 +115,6 @@ template <class Tr>
 class old_vertex {
  public:
   using traits_type = Tr;
-  using props_type = typename Tr::vertex_props;
 
   old_vertex(const vertex<Tr>& v, where w) : ctx_(v.ctx()), id_(v.slot()) {
     if (!v) raise(w, "`", [] { return std::string("old state of the null vertex"); });
@@ -118,8 +122,14 @@ class old_vertex {
       raise(w, "`", [&] { return name_of(v) + " has never been synchronised (strict mode)"; });
   }
 
-  const props_type& props(where = where::here()) const noexcept { return ctx_->old_props(id_); }
-  const props_type* operator->() const noexcept { return &props(); }
+  template <class T = Tr>
+  const typename T::vertex_props& props(where = where::here()) const noexcept {
+    return ctx_->old_props(id_);
+  }
+  template <class T = Tr>
+  const typename T::vertex_props* operator->() const noexcept {
+    return &props();
+  }
   //! The vertex itself (edits through `` `v `` change its current state).
   vertex<Tr> current() const noexcept { return vertex<Tr>::from_slot(ctx_, id_); }
   bool synchronised() const noexcept {

@@ -1,0 +1,79 @@
+// Runs a translated test program linked into this executable, as the
+// interpreter's batch mode will: configure, start, N steps, end, close.
+//
+//   driver [--steps N] [--model-dir DIR] [--expect-error TEXT] [--write MESH FILE]
+//
+// Exits 0 when every CHECK in the program held (and at least one ran) and
+// no block failed, or, with --expect-error, when a block failed with a
+// message containing TEXT.
+#include <cstdlib>
+#include <cstring>
+#include <iostream>
+#include <string>
+
+#include <vv/plugin.hpp>
+
+#include "vv_check.hpp"
+
+int main(int argc, char** argv) {
+  unsigned steps = 0;
+  std::string model_dir = ".", expected_error, write_mesh, write_path;
+  for (int i = 1; i < argc; ++i) {
+    std::string a = argv[i];
+    if (a == "--steps" && i + 1 < argc) steps = static_cast<unsigned>(std::atoi(argv[++i]));
+    else if (a == "--model-dir" && i + 1 < argc) model_dir = argv[++i];
+    else if (a == "--expect-error" && i + 1 < argc) expected_error = argv[++i];
+    else if (a == "--write" && i + 2 < argc) write_mesh = argv[++i], write_path = argv[++i];
+    else {
+      std::cerr << "driver: bad argument " << a << "\n";
+      return 2;
+    }
+  }
+  if (vv_plugin_abi_version() != VV_PLUGIN_ABI_VERSION) {
+    std::cerr << "driver: plugin ABI " << vv_plugin_abi_version() << ", expected " << VV_PLUGIN_ABI_VERSION << "\n";
+    return 2;
+  }
+  vv_plugin_settings settings{model_dir.c_str(), 42, 0};
+  vv_plugin_configure(&settings);
+
+  std::string error;
+  auto run = [&](const char* name, const char* (*block)()) {
+    if (!error.empty()) return;
+    if (const char* e = block()) error = std::string(name) + ": " + e;
+  };
+  run("start", vv_plugin_start);
+  for (unsigned i = 0; i < steps; ++i) run("step", vv_plugin_step);
+  run("end", vv_plugin_end);
+  if (!write_mesh.empty() && error.empty()) {
+    std::size_t count = 0;
+    const vv_mesh_entry* meshes = vv_plugin_meshes(&count);
+    bool found = false;
+    for (std::size_t i = 0; i < count; ++i)
+      if (write_mesh == meshes[i].name) {
+        found = true;
+        if (const char* e = meshes[i].write_vvm(write_path.c_str())) error = e;
+      }
+    if (!found) error = "no global mesh named " + write_mesh;
+  }
+  run("close", vv_plugin_close);
+
+  if (!expected_error.empty()) {
+    if (error.find(expected_error) != std::string::npos) {
+      std::cout << "failed as expected: " << error << "\n";
+      return vv_check::failures == 0 ? 0 : 1;
+    }
+    std::cerr << "expected an error containing \"" << expected_error << "\", got "
+              << (error.empty() ? std::string("none") : "\"" + error + "\"") << "\n";
+    return 1;
+  }
+  if (!error.empty()) {
+    std::cerr << error << "\n";
+    return 1;
+  }
+  std::cout << vv_check::checks << " checks, " << vv_check::failures << " failed\n";
+  if (vv_check::checks == 0) {
+    std::cerr << "the program ran no CHECK\n";
+    return 1;
+  }
+  return vv_check::failures == 0 ? 0 : 1;
+}

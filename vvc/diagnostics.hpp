@@ -1,0 +1,43 @@
+// Error reporting: every message is "file:line:col: error: message",
+// followed by the source line and a caret under the column.
+#pragma once
+
+#include <ostream>
+#include <string>
+#include <vector>
+
+#include "token.hpp"
+
+namespace vvc {
+
+struct diagnostic {
+  const source_file* file;
+  int line, col;
+  std::string message;
+};
+
+class diagnostics {
+ public:
+  void error(const token& at, std::string message);
+  void error(const source_file* file, int line, int col, std::string message);
+  bool any() const { return !list_.empty(); }
+  std::size_t count() const { return list_.size(); }
+  const std::vector<diagnostic>& list() const { return list_; }
+  //! Writes every diagnostic in the order found.
+  void print(std::ostream& os) const;
+  //! For trial parses: how many there are now, and forgetting newer ones.
+  std::size_t mark() const { return list_.size(); }
+  void rollback(std::size_t mark) { list_.resize(mark); }
+  //! Too many errors: later ones are dropped and translation gives up.
+  bool saturated() const { return list_.size() >= limit; }
+
+  static constexpr std::size_t limit = 25;
+
+ private:
+  std::vector<diagnostic> list_;
+};
+
+//! One diagnostic as text (with its source line and caret).
+std::string format(const diagnostic& d);
+
+}  // namespace vvc

@@ -1,0 +1,289 @@
+#include "lexer.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cctype>
+#include <cstring>
+#include <string>
+
+namespace vvc {
+
+namespace {
+
+// Longest first, so that the first match is the longest.
+constexpr std::array<std::string_view, 44> punctuators = {
+    "<=>", "<<=", ">>=", "->*", "...", "::", "->", "++", "--", "<<", ">>", "<=", ">=", "==", "!=",
+    "&&",  "||",  "+=",  "-=",  "*=",  "/=", "%=", "&=", "|=", "^=", "##", ".*", "{",  "}",  "[",
+    "]",   "(",   ")",   ";",   ":",   ",",  ".",  "+",  "-",  "*",  "/",  "%",  "<",  ">"};
+constexpr std::string_view single_punct = "&|^~!=?#";
+
+bool ident_start(char c) { return std::isalpha(static_cast<unsigned char>(c)) || c == '_'; }
+bool ident_char(char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; }
+
+// U+2018 LEFT SINGLE QUOTATION MARK, the typographic backtick.
+constexpr std::string_view left_quote = "\xE2\x80\x98";
+
+class lexer {
+ public:
+  lexer(const source_file& f, source_set& sources, diagnostics& diag,
+        std::vector<const source_file*>& stack, std::vector<token>& out)
+      : f_(f), s_(f.text), sources_(sources), diag_(diag), stack_(stack), out_(out) {}
+
+  void run() {
+    bool space = false;
+    bool line_start = true;
+    while (pos_ < s_.size()) {
+      char c = s_[pos_];
+      if (c == '\n') {
+        ++pos_, ++line_, line_begin_ = pos_;
+        space = true, line_start = true;
+        continue;
+      }
+      if (c == ' ' || c == '\t' || c == '\r' || c == '\f' || c == '\v') {
+        ++pos_, space = true;
+        continue;
+      }
+      if (c == '\\' && pos_ + 1 < s_.size() && (s_[pos_ + 1] == '\n' || s_[pos_ + 1] == '\r')) {
+        ++pos_, space = true;  // a line continuation between tokens
+        continue;
+      }
+      if (starts("//")) {
+        while (pos_ < s_.size() && s_[pos_] != '\n') ++pos_;
+        space = true;
+        continue;
+      }
+      if (starts("/*")) {
+        block_comment();
+        space = true;
+        continue;
+      }
+      token t;
+      t.file = &f_;
+      t.line = line_;
+      t.col = static_cast<int>(pos_ - line_begin_) + 1;
+      t.space_before = space;
+      t.line_start = line_start;
+      std::size_t begin = pos_;
+      if (c == '#' && line_start) {
+        preprocessor(t, begin);
+      } else if (!scan(t)) {
+        continue;  // an error was reported and the text skipped
+      }
+      if (t.kind != tok::preproc || t.text.size() > 0) {
+        if (t.text.empty()) t.text = std::string_view(s_).substr(begin, pos_ - begin);
+        if (t.kind != tok::eof) out_.push_back(t);
+      }
+      space = false;
+      line_start = false;
+    }
+  }
+
+ private:
+  bool starts(std::string_view p) const { return std::string_view(s_).substr(pos_, p.size()) == p; }
+
+  void error_here(std::size_t at, int line, std::size_t line_begin, const std::string& msg) {
+    diag_.error(&f_, line, static_cast<int>(at - line_begin) + 1, msg);
+  }
+
+  void block_comment() {
+    std::size_t at = pos_;
+    int line = line_;
+    std::size_t lb = line_begin_;
+    pos_ += 2;
+    while (pos_ < s_.size() && !starts("*/")) {
+      if (s_[pos_] == '\n') ++line_, line_begin_ = pos_ + 1;
+      ++pos_;
+    }
+    if (pos_ >= s_.size()) {
+      error_here(at, line, lb, "unterminated comment: '/*' has no '*/'");
+      return;
+    }
+    pos_ += 2;
+  }
+
+  // A preprocessor line, with its continuations. `#include "x.vvp"` brings
+  // in the tokens of x.vvp instead.
+  void preprocessor(token& t, std::size_t begin) {
+    while (pos_ < s_.size() && s_[pos_] != '\n') {
+      if (s_[pos_] == '\\' && pos_ + 1 < s_.size() && s_[pos_ + 1] == '\n')
+        ++pos_, ++line_, line_begin_ = pos_ + 1;
+      else if (starts("/*")) {
+        block_comment();
+        continue;
+      }
+      ++pos_;
+    }
+    t.kind = tok::preproc;
+    t.text = std::string_view(s_).substr(begin, pos_ - begin);
+    std::string included;
+    if (vvp_include(t.text, included)) {
+      include(t, included);
+      t.text = std::string_view();  // nothing of the directive itself remains
+    }
+  }
+
+  static bool vvp_include(std::string_view line, std::string& path) {
+    std::size_t i = 1;
+    auto skip = [&] {
+      while (i < line.size() && (line[i] == ' ' || line[i] == '\t')) ++i;
+    };
+    skip();
+    if (line.substr(i, 7) != "include") return false;
+    i += 7;
+    skip();
+    if (i >= line.size() || line[i] != '"') return false;
+    std::size_t close = line.find('"', i + 1);
+    if (close == std::string_view::npos) return false;
+    path = std::string(line.substr(i + 1, close - i - 1));
+    return path.size() > 4 && path.compare(path.size() - 4, 4, ".vvp") == 0;
+  }
+
+  void include(const token& at, const std::string& name) {
+    std::string path = name[0] == '/' ? name : f_.folder() + name;
+    for (const source_file* open : stack_)
+      if (open->path == path) {
+        diag_.error(at, "'" + name + "' includes itself (through #include)");
+        return;
+      }
+    std::string why;
+    const source_file* inc = sources_.load(path, &why);
+    if (!inc) {
+      diag_.error(at, "cannot open included file '" + name + "': " + why);
+      return;
+    }
+    stack_.push_back(inc);
+    lexer(*inc, sources_, diag_, stack_, out_).run();
+    stack_.pop_back();
+  }
+
+  bool scan(token& t) {
+    char c = s_[pos_];
+    if (ident_start(c)) return word(t);
+    if (std::isdigit(static_cast<unsigned char>(c)) ||
+        (c == '.' && pos_ + 1 < s_.size() && std::isdigit(static_cast<unsigned char>(s_[pos_ + 1]))))
+      return number(t);
+    if (c == '"') return quoted(t, '"', tok::string);
+    if (c == '\'') return quoted(t, '\'', tok::character);
+    if (c == '`') return ++pos_, t.kind = tok::backtick, true;
+    if (starts(left_quote)) return pos_ += left_quote.size(), t.kind = tok::backtick, true;
+    if (c == '$') return ++pos_, t.kind = tok::dollar, true;
+    if (c == '@') return ++pos_, t.kind = tok::at, true;
+    for (std::string_view p : punctuators)
+      if (starts(p)) return pos_ += p.size(), t.kind = tok::punct, true;
+    if (single_punct.find(c) != std::string_view::npos) return ++pos_, t.kind = tok::punct, true;
+    std::string shown = std::isprint(static_cast<unsigned char>(c))
+                            ? std::string("'") + c + "'"
+                            : "byte " + std::to_string(static_cast<unsigned char>(c));
+    error_here(pos_, line_, line_begin_, "stray " + shown + " in program");
+    ++pos_;
+    while (pos_ < s_.size() && (static_cast<unsigned char>(s_[pos_]) & 0xC0) == 0x80) ++pos_;
+    return false;
+  }
+
+  bool word(token& t) {
+    std::size_t begin = pos_;
+    while (pos_ < s_.size() && ident_char(s_[pos_])) ++pos_;
+    std::string_view w = std::string_view(s_).substr(begin, pos_ - begin);
+    if (pos_ < s_.size() && s_[pos_] == '"' && (w == "R" || w == "u8R" || w == "uR" || w == "UR" || w == "LR"))
+      return raw_string(t, begin);
+    if (pos_ < s_.size() && (s_[pos_] == '"' || s_[pos_] == '\'') &&
+        (w == "u8" || w == "u" || w == "U" || w == "L")) {
+      char q = s_[pos_];
+      bool ok = quoted(t, q, q == '"' ? tok::string : tok::character);
+      t.text = std::string_view(s_).substr(begin, pos_ - begin);
+      return ok;
+    }
+    t.kind = tok::identifier;
+    return true;
+  }
+
+  // A pp-number, as C++ defines it: a sign belongs to it after e, E, p, P
+  // (so 1e+5 is one token), and ' separates digits.
+  bool number(token& t) {
+    while (pos_ < s_.size()) {
+      char c = s_[pos_];
+      if ((c == '+' || c == '-') && std::strchr("eEpP", s_[pos_ - 1]))
+        ++pos_;
+      else if (ident_char(c) || c == '.')
+        ++pos_;
+      else if (c == '\'' && pos_ + 1 < s_.size() && ident_char(s_[pos_ + 1]))
+        pos_ += 2;
+      else
+        break;
+    }
+    t.kind = tok::number;
+    return true;
+  }
+
+  bool quoted(token& t, char q, tok kind) {
+    ++pos_;
+    while (pos_ < s_.size() && s_[pos_] != q && s_[pos_] != '\n') {
+      if (s_[pos_] == '\\' && pos_ + 1 < s_.size()) {
+        if (s_[pos_ + 1] == '\n') ++line_, line_begin_ = pos_ + 2;
+        ++pos_;
+      }
+      ++pos_;
+    }
+    if (pos_ >= s_.size() || s_[pos_] != q) {
+      diag_.error(&f_, t.line, t.col,
+                  q == '"' ? "unterminated string literal" : "unterminated character literal");
+      return false;
+    }
+    ++pos_;
+    while (pos_ < s_.size() && ident_char(s_[pos_])) ++pos_;  // user-defined suffix
+    t.kind = kind;
+    return true;
+  }
+
+  bool raw_string(token& t, std::size_t begin) {
+    ++pos_;  // the quote
+    std::size_t open = s_.find('(', pos_);
+    if (open == std::string::npos || open - pos_ > 16) {
+      diag_.error(&f_, t.line, t.col, "malformed raw string literal");
+      pos_ = s_.size();
+      return false;
+    }
+    std::string close = ")" + s_.substr(pos_, open - pos_) + "\"";
+    std::size_t end = s_.find(close, open);
+    if (end == std::string::npos) {
+      diag_.error(&f_, t.line, t.col, "unterminated raw string literal");
+      pos_ = s_.size();
+      return false;
+    }
+    for (std::size_t i = pos_; i < end; ++i)
+      if (s_[i] == '\n') ++line_, line_begin_ = i + 1;
+    pos_ = end + close.size();
+    while (pos_ < s_.size() && ident_char(s_[pos_])) ++pos_;
+    t.kind = tok::string;
+    t.text = std::string_view(s_).substr(begin, pos_ - begin);
+    return true;
+  }
+
+  const source_file& f_;
+  const std::string& s_;
+  source_set& sources_;
+  diagnostics& diag_;
+  std::vector<const source_file*>& stack_;
+  std::vector<token>& out_;
+  std::size_t pos_ = 0;
+  std::size_t line_begin_ = 0;
+  int line_ = 1;
+};
+
+}  // namespace
+
+std::vector<token> lex(const source_file& file, source_set& sources, diagnostics& diag) {
+  std::vector<token> out;
+  std::vector<const source_file*> stack{&file};
+  lexer(file, sources, diag, stack, out).run();
+  token eof;
+  eof.kind = tok::eof;
+  eof.file = &file;
+  eof.line = static_cast<int>(file.line_starts.size());
+  eof.col = static_cast<int>(file.line(eof.line).size()) + 1;
+  eof.line_start = true;
+  out.push_back(eof);
+  return out;
+}
+
+}  // namespace vvc

@@ -1,0 +1,122 @@
+// The recursive-descent parser.
+//
+// vv extends C++, and a translator that had to understand all of C++
+// would be a compiler. This one understands exactly what it must to find
+// every vv construct and its operands with certainty:
+//
+//  * the top level: preprocessor lines, property blocks, execution blocks,
+//    and C++ declarations (whose function and class bodies it enters);
+//  * statements in bodies: compound, if, while, do, for, switch, try,
+//    labels, the vv statements, and anything else up to its `;`;
+//  * inside those, "runs" of tokens in which groups ( [ { are balanced and
+//    the vv expressions are recognised where they start: a vv keyword, a
+//    backtick, `$`, `@`, or a parenthesised `(X ^ Y)` / `(X | Y)`.
+//
+// vv expression operands are unary expressions (like the operand of
+// sizeof): `nextto b in c$x` takes `c$x`, and `a + nextto b in c` adds.
+// Everything else passes through token for token.
+//
+// Rules that decide between vv and C++ look only at tokens, never at names
+// a program chose: a vv word is a keyword where the vv form it starts is
+// complete (`next(i)to`, `any in`, `is X in`, `erase X from`), and C++
+// otherwise (a call `next(i)`, a variable `any`).
+//
+// Each parse function documents its grammar in the comment above it.
+#pragma once
+
+#include <initializer_list>
+#include <string_view>
+#include <vector>
+
+#include "diagnostics.hpp"
+#include "syntax.hpp"
+
+namespace vvc {
+
+class parser {
+ public:
+  parser(const std::vector<token>& tokens, diagnostics& diag) : toks_(tokens), diag_(diag) {}
+  program parse_program();
+
+ private:
+  // ---- cursor (parser.cpp) ----
+  const token& peek(std::size_t k = 0) const;
+  const token* take();
+  bool at(std::string_view text) const { return peek().is(text); }
+  bool accept(std::string_view text);
+  //! Consumes `text` or reports "expected `text` <context>".
+  const token* expect(std::string_view text, const std::string& context);
+  bool at_end() const { return peek().kind == tok::eof; }
+  void error(const token& at, std::string message) { diag_.error(at, std::move(message)); }
+  //! Skips to just after the next ; or to a } that closes the statement.
+  void recover();
+
+  // ---- runs of tokens (parser_runs.cpp) ----
+  enum class mode {
+    expression,   // a statement or initializer: lambdas have bodies
+    declaration,  // namespace or class scope: function bodies too
+  };
+  //! run = { group | vv-construct | token } up to one of `stops` at depth 0
+  //! (or, with `declaration_ends`, just after a function or namespace body)
+  pieces parse_run(std::initializer_list<std::string_view> stops, mode m,
+                   bool declaration_ends = false);
+  //! group = "(" run ")" | "[" run "]" | "{" run "}" | body | class-body
+  piece parse_group(const pieces& before, mode m);
+  bool starts_lambda_body(const pieces& before) const;
+  bool starts_function_body(const pieces& before) const;
+  //! Whether the first n pieces of `before` head a class (1) or namespace (2) body.
+  int opens_scope_body(const pieces& before, std::size_t n) const;
+
+  // ---- vv expressions (parser_vv.cpp) ----
+  //! Parses a vv expression starting here, if one does; false otherwise.
+  bool parse_vv_expression(pieces& out);
+  //! operand = prefix-op operand | vv-expression | "`" postfix | path | primary postfix*
+  pieces parse_operand(const std::string& context);
+  bool starts_operand(const token& t) const;
+  //! postfix = "(" run ")" | "[" run "]" | "." name | "->" name | "::" name | "$" name | "++" | "--"
+  void parse_postfix(pieces& out, bool allow_property);
+  piece parse_old_state();
+  piece parse_path();
+  piece parse_query();
+  //! In a `(` group that is no call: `( operand ^ operand )` or with `|`.
+  bool parse_edge_access(piece& out);
+  //! Tries `parse`; on failure restores the cursor and the diagnostics.
+  template <class F>
+  bool attempt(F&& parse);
+
+  // ---- statements (parser_statements.cpp) ----
+  stmt_ptr parse_statement();
+  stmt_ptr parse_compound();
+  stmt_ptr parse_simple();
+  bool parse_edit(stmt& s);
+  bool edit_follows() const;
+  stmt_ptr parse_forall();
+  bool parse_vertex_declaration(stmt& s);
+  stmt_ptr parse_body_statements(const token* open);
+  void body_statements(stmt_list& out);
+
+  // ---- top level (parser_top.cpp) ----
+  void parse_property_block(program& p);
+  void parse_execution_block(program& p);
+  void parse_top_declaration(program& p);
+  void analyse_fields(property_block& block);
+  void note_uses(const pieces& run);
+
+  const std::vector<token>& toks_;
+  diagnostics& diag_;
+  std::size_t pos_ = 0;
+  int depth_ = 0;             // nesting of bodies (0: top level)
+  const token* first_use_[3] = {nullptr, nullptr, nullptr};  // edge, vertex, mesh outside blocks
+};
+
+template <class F>
+bool parser::attempt(F&& parse) {
+  std::size_t pos = pos_;
+  std::size_t mark = diag_.mark();
+  if (parse() && diag_.mark() == mark) return true;
+  pos_ = pos;
+  diag_.rollback(mark);
+  return false;
+}
+
+}  // namespace vvc

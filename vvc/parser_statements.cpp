@@ -1,0 +1,321 @@
+// Statements in function, lambda and execution-block bodies.
+#include <iterator>
+
+#include "parser.hpp"
+#include "words.hpp"
+
+namespace vvc {
+
+namespace {
+
+stmt_ptr make_stmt(stmt_kind k, const token* t) {
+  auto s = std::make_unique<stmt>();
+  s->kind = k;
+  s->tok = t;
+  return s;
+}
+
+// The keyword that must follow the first operand of each edit, which tells
+// an edit from a C++ call of a function that happens to share its name.
+std::string_view continuation_of(std::string_view edit) {
+  if (edit == "erase" || edit == "remove") return "from";
+  if (edit == "replace" || edit == "merge") return "with";
+  if (edit == "flag") return "in";
+  if (edit == "add") return "to";
+  if (edit == "clear") return ";";
+  return "";
+}
+
+bool is_edit_word(std::string_view w) {
+  return w == "make" || w == "erase" || w == "replace" || w == "splice" || w == "flag" ||
+         w == "add" || w == "remove" || w == "merge" || w == "clear" || w == "synchronise" ||
+         w == "synchronize";
+}
+
+}  // namespace
+
+// statements = { statement } up to "}"
+void parser::body_statements(stmt_list& out) {
+  while (!at_end() && !at("}") && !diag_.saturated()) {
+    std::size_t before = pos_;
+    out.push_back(parse_statement());
+    if (pos_ == before) {  // nothing consumed: a stray closer
+      error(peek(), "unexpected '" + std::string(peek().text) + "'");
+      take();
+    }
+  }
+}
+
+// compound = "{" statements "}"
+stmt_ptr parser::parse_compound() {
+  auto s = make_stmt(stmt_kind::compound, take());
+  ++depth_;
+  body_statements(s->children);
+  --depth_;
+  if (at("}")) s->end = take();
+  else
+    error(*s->tok, "unterminated block: this '{' has no matching '}'");
+  return s;
+}
+
+// statement = compound | ";" | preprocessor-line
+//           | "if" ["constexpr"] "(" run ")" statement ["else" statement]
+//           | "while" "(" run ")" statement | "do" statement "while" "(" run ")" ";"
+//           | "for" "(" run ")" statement | "switch" "(" run ")" statement
+//           | "try" compound { "catch" "(" run ")" compound }
+//           | ("case" run | "default" | name) ":"
+//           | forall | edit | vertex-declaration | run ";"
+stmt_ptr parser::parse_statement() {
+  const token& t = peek();
+  if (t.kind == tok::preproc) return make_stmt(stmt_kind::preproc, take());
+  if (t.is("{")) return parse_compound();
+  if (t.is(";")) {
+    auto s = make_stmt(stmt_kind::empty, take());
+    s->end = s->tok;
+    return s;
+  }
+  if (t.is_identifier()) {
+    std::string_view w = t.text;
+    auto header = [&](stmt& s) {
+      if (!at("(")) {
+        error(peek(), "expected '(' after '" + std::string(w) + "'");
+        return;
+      }
+      s.head.push_back(parse_group(s.head, mode::expression));
+    };
+    if (w == "if") {
+      auto s = make_stmt(stmt_kind::if_, take());
+      if (at("constexpr")) s->head.push_back(token_piece(take()));
+      header(*s);
+      s->children.push_back(parse_statement());
+      if (at("else")) {
+        s->else_tok = take();
+        s->children.push_back(parse_statement());
+      }
+      return s;
+    }
+    if (w == "while" || w == "for" || w == "switch") {
+      auto s = make_stmt(w == "while" ? stmt_kind::while_ : w == "for" ? stmt_kind::for_ : stmt_kind::switch_, take());
+      header(*s);
+      s->children.push_back(parse_statement());
+      return s;
+    }
+    if (w == "do") {
+      auto s = make_stmt(stmt_kind::do_while, take());
+      s->children.push_back(parse_statement());
+      if (expect("while", "after the body of 'do'")) header(*s);
+      s->end = expect(";", "after 'do ... while (...)'");
+      return s;
+    }
+    if (w == "try") {
+      auto s = make_stmt(stmt_kind::try_, take());
+      if (!at("{")) error(peek(), "expected '{' after 'try'");
+      else s->children.push_back(parse_compound());
+      while (at("catch")) {
+        take();
+        pieces h;
+        if (at("(")) h.push_back(parse_group(h, mode::expression));
+        else error(peek(), "expected '(' after 'catch'");
+        s->heads.push_back(std::move(h));
+        if (!at("{")) {
+          error(peek(), "expected '{' after the catch clause");
+          break;
+        }
+        s->children.push_back(parse_compound());
+      }
+      return s;
+    }
+    if (w == "case" || w == "default" || (peek(1).is(":") && !is_reserved_vv_word(w) &&
+                                          !is_expression_keyword(w))) {
+      auto s = make_stmt(stmt_kind::label, &t);
+      s->head = parse_run({":"}, mode::expression);
+      if (const token* colon = expect(":", "after the label")) s->head.push_back(token_piece(colon));
+      return s;
+    }
+    if (w == "forall") return parse_forall();
+    if (is_edit_word(w) && edit_follows()) {
+      auto s = make_stmt(stmt_kind::edit, &t);
+      if (!parse_edit(*s)) recover();
+      return s;
+    }
+    if (w == "vertex") {
+      auto s = make_stmt(stmt_kind::vertex_decl, &t);
+      std::size_t start = pos_;
+      if (attempt([&] { return parse_vertex_declaration(*s); })) return s;
+      pos_ = start;  // `vertex& r = v;`, `vertex* p;`, `vertex a[4];`: plain C++
+    }
+  }
+  return parse_simple();
+}
+
+// simple = run ";"
+stmt_ptr parser::parse_simple() {
+  auto s = make_stmt(stmt_kind::simple, &peek());
+  s->head = parse_run({";"}, mode::expression);
+  s->end = expect(";", "at the end of the statement");
+  if (!s->end) recover();
+  return s;
+}
+
+// A vv edit starts here (not a C++ use of the same word): the word is
+// followed by an operand, and, when that operand is parenthesised, by the
+// edit's next keyword (`erase (x) from v;` but `erase(x);` is a call).
+bool parser::edit_follows() const {
+  std::string_view w = peek().text;
+  if (w == "synchronise" || w == "synchronize") return true;
+  const token& next = peek(1);
+  if (w == "make") return next.is("{");
+  if (next.is("(")) {
+    if (w == "splice") return false;
+    int depth = 0;
+    for (std::size_t k = pos_ + 1; k < toks_.size(); ++k) {
+      if (toks_[k].is("(")) ++depth;
+      if (toks_[k].is(")") && --depth == 0)
+        return k + 1 < toks_.size() && toks_[k + 1].is(continuation_of(w));
+      if (toks_[k].kind == tok::eof) return false;
+    }
+    return false;
+  }
+  return starts_operand(next) && !next.is("*") && !next.is("&") && !next.is("-") &&
+         !next.is("+") && !next.is("++") && !next.is("--");
+}
+
+// edit = "make" "{" run {"," run} "}" "nb_of" operand ";"
+//      | "erase" ("flag" | operand) "from" operand ";"
+//      | "replace" ("flag" | operand) "with" operand "in" operand ";"
+//      | "splice" operand ("after" | "before") ("flag" | operand) "in" operand ";"
+//      | "flag" operand "in" operand ";"
+//      | "add" operand "to" operand ";" | "remove" operand "from" operand ";"
+//      | "merge" operand "with" operand ";"
+//      | ("clear" | "synchronise" | "synchronize") operand ";"
+bool parser::parse_edit(stmt& s) {
+  std::string w(take()->text);
+  auto operand = [&](const std::string& context) { s.operands.push_back(parse_operand(context)); };
+  auto word = [&](std::string_view kw, const std::string& context) {
+    return expect(kw, context) != nullptr;
+  };
+  auto flag_then = [&](std::string_view kw) { return at("flag") && peek(1).is_word(kw); };
+  bool ok = true;
+  if (w == "make") {
+    s.edit = edit_kind::make;
+    const token* open = take();
+    std::vector<pieces> list;
+    while (!at("}") && !at_end()) {
+      list.push_back(parse_run({","}, mode::expression));
+      if (list.back().empty()) error(peek(), "expected a vertex in the list of 'make'");
+      if (!accept(",")) break;
+    }
+    if (!accept("}")) {
+      error(at_end() ? *open : peek(), "expected '}' to end the list of 'make'");
+      return false;
+    }
+    ok = word("nb_of", "after the list of 'make'");
+    if (ok) operand("after 'nb_of'");
+    s.operands.insert(s.operands.end(), std::make_move_iterator(list.begin()),
+                      std::make_move_iterator(list.end()));
+  } else if (w == "erase") {
+    if (flag_then("from")) {
+      take();
+      s.edit = edit_kind::erase_flag;
+    } else {
+      s.edit = edit_kind::erase;
+      operand("after 'erase'");
+    }
+    ok = word("from", "in 'erase ... from ...'");
+    if (ok) operand("after 'from'");
+  } else if (w == "replace") {
+    if (flag_then("with")) {
+      take();
+      s.edit = edit_kind::replace_flag;
+    } else {
+      s.edit = edit_kind::replace;
+      operand("after 'replace'");
+    }
+    ok = word("with", "in 'replace ... with ... in ...'");
+    if (ok) operand("after 'with'");
+    ok = ok && word("in", "in 'replace ... with ... in ...'");
+    if (ok) operand("after 'in'");
+  } else if (w == "splice") {
+    operand("after 'splice'");
+    bool after = at("after");
+    if (!after && !at("before")) {
+      error(peek(), "expected 'after' or 'before' in 'splice'");
+      return false;
+    }
+    take();
+    if (flag_then("in")) {
+      take();
+      s.edit = after ? edit_kind::splice_after_flag : edit_kind::splice_before_flag;
+    } else {
+      s.edit = after ? edit_kind::splice_after : edit_kind::splice_before;
+      operand(after ? "after 'after'" : "after 'before'");
+    }
+    ok = word("in", "in 'splice ... in ...'");
+    if (ok) operand("after 'in'");
+  } else if (w == "flag" || w == "add" || w == "remove" || w == "merge") {
+    s.edit = w == "flag" ? edit_kind::flag : w == "add" ? edit_kind::add
+             : w == "remove" ? edit_kind::remove : edit_kind::merge;
+    std::string_view next = continuation_of(w);
+    operand("after '" + w + "'");
+    ok = word(next, "in '" + w + " ... " + std::string(next) + " ...'");
+    if (ok) operand("after '" + std::string(next) + "'");
+  } else {
+    s.edit = w == "clear" ? edit_kind::clear : edit_kind::synchronise;
+    operand("after '" + w + "'");
+  }
+  if (!ok) return false;
+  s.end = expect(";", "at the end of '" + w + "'");
+  return s.end != nullptr;
+}
+
+// forall = "forall" name "in" operand statement
+stmt_ptr parser::parse_forall() {
+  auto s = make_stmt(stmt_kind::forall, take());
+  if (!peek().is_identifier() || is_reserved_vv_word(peek().text)) {
+    error(peek(), "expected the name of the loop vertex after 'forall'");
+    recover();
+    return s;
+  }
+  s->name = take();
+  if (!expect("in", "after the loop vertex of 'forall'")) {
+    recover();
+    return s;
+  }
+  s->operands.push_back(parse_operand("after 'in'"));
+  s->children.push_back(parse_statement());
+  return s;
+}
+
+// vertex-declaration = "vertex" declarator {"," declarator} ";"
+// declarator = name | name "(" [run {"," run}] ")" | name "{" ... "}" | name "=" run
+bool parser::parse_vertex_declaration(stmt& s) {
+  take();  // vertex
+  while (true) {
+    if (!peek().is_identifier() || is_reserved_vv_word(peek().text)) return false;
+    vertex_declarator d;
+    d.name = take();
+    if (at("(") || at("{")) {
+      std::string_view close = at("(") ? ")" : "}";
+      take();
+      d.how = vertex_declarator::create_with;
+      while (!at(close) && !at_end()) {
+        d.args.push_back(parse_run({","}, mode::expression));
+        if (!accept(",")) break;
+      }
+      if (!accept(close)) return false;
+      if (d.args.empty()) d.how = vertex_declarator::create;
+    } else if (accept("=")) {
+      d.how = vertex_declarator::reference;
+      d.args.push_back(parse_run({",", ";"}, mode::expression));
+      if (d.args[0].empty()) error(peek(), "expected an initial value after '='");
+    } else if (!at(",") && !at(";")) {
+      return false;
+    }
+    s.declarators.push_back(std::move(d));
+    if (!accept(",")) break;
+  }
+  s.end = expect(";", "at the end of the vertex declaration");
+  return s.end != nullptr;
+}
+
+}  // namespace vvc

@@ -1,0 +1,227 @@
+// The top level: property blocks, execution blocks, C++ declarations.
+#include "parser.hpp"
+#include "words.hpp"
+
+namespace vvc {
+
+namespace {
+
+int property_index(std::string_view w) { return w == "edge" ? 0 : w == "vertex" ? 1 : w == "mesh" ? 2 : -1; }
+const char* property_name(int i) { return i == 0 ? "edge" : i == 1 ? "vertex" : "mesh"; }
+
+}  // namespace
+
+// program = { preprocessor-line | property-block | execution-block | declaration }
+program parser::parse_program() {
+  program p;
+  while (!at_end() && !diag_.saturated()) {
+    const token& t = peek();
+    if (t.kind == tok::preproc) {
+      top_item item;
+      item.kind = top_item::preproc;
+      item.tok = take();
+      p.items.push_back(std::move(item));
+    } else if (property_index(t.text) >= 0 && t.is_identifier() && peek(1).is("{")) {
+      parse_property_block(p);
+    } else if (t.is_identifier() && is_block_name(t.text) && peek(1).is("{")) {
+      parse_execution_block(p);
+    } else if (t.is(")") || t.is("]") || t.is("}")) {
+      error(t, "unmatched '" + std::string(t.text) + "'");
+      take();
+    } else {
+      parse_top_declaration(p);
+    }
+  }
+  p.last_property_item = p.items.size();
+  for (std::size_t i = 0; i < p.items.size(); ++i)
+    if (p.items[i].kind == top_item::property) p.last_property_item = i;
+  for (const property_block& b : p.properties) {
+    int k = property_index(b.keyword->text);
+    (k == 0 ? p.edge : k == 1 ? p.vertex : p.mesh) = &b;
+  }
+  return p;
+}
+
+// property-block = ("edge" | "vertex" | "mesh") "{" declarations "}" [";"]
+// in this order, each at most once, before any other use of its word.
+void parser::parse_property_block(program& p) {
+  property_block b;
+  b.keyword = take();
+  int k = property_index(b.keyword->text);
+  for (const property_block& other : p.properties) {
+    int j = property_index(other.keyword->text);
+    if (j == k)
+      error(*b.keyword, std::string("a second ") + property_name(k) + " block (the first is at line " +
+                            std::to_string(other.keyword->line) + ")");
+    else if (j > k)
+      error(*b.keyword, std::string("the ") + property_name(k) + " block must come before the " +
+                            property_name(j) + " block (property blocks go edge, vertex, mesh)");
+  }
+  if (first_use_[k])
+    error(*b.keyword, std::string("the ") + property_name(k) +
+                          " block must come before any other use of '" + property_name(k) +
+                          "' (used at line " + std::to_string(first_use_[k]->line) + ")");
+  b.open = take();
+  b.members = parse_run({}, mode::declaration);
+  if (at("}")) {
+    b.close = take();
+  } else {
+    error(*b.open, std::string("unterminated ") + property_name(k) + " block: this '{' has no matching '}'");
+    return;
+  }
+  accept(";");
+  analyse_fields(b);
+  top_item item;
+  item.kind = top_item::property;
+  item.tok = b.keyword;
+  item.property_index = p.properties.size();
+  p.properties.push_back(std::move(b));
+  p.items.push_back(std::move(item));
+}
+
+// execution-block = block-name compound, each name at most once.
+void parser::parse_execution_block(program& p) {
+  top_item item;
+  item.kind = top_item::block;
+  item.block_name = take();
+  item.tok = item.block_name;
+  std::string name(item.block_name->text);
+  for (const top_item& other : p.items)
+    if (other.kind == top_item::block && other.block_name->text == name)
+      error(*item.block_name, "the execution block '" + name + "' is given twice (first at line " +
+                                  std::to_string(other.block_name->line) + ")");
+  p.blocks.push_back(name);
+  item.block_body = parse_compound();
+  p.items.push_back(std::move(item));
+}
+
+// declaration = run (";" | ending in a function or namespace body)
+void parser::parse_top_declaration(program& p) {
+  std::size_t start = pos_;
+  const token& first = peek();
+  if (first.is_word("vertex") && peek(1).is_identifier() &&
+      (peek(2).is(";") || peek(2).is(",") || peek(2).is("{")))
+    error(peek(1), "vertex '" + std::string(peek(1).text) +
+                       "' would be created at global scope, where no model exists yet; write "
+                       "'vertex " + std::string(peek(1).text) +
+                       " = 0;' here and create the vertex in an execution block");
+  top_item item;
+  item.tok = &first;
+  item.cxx = parse_run({";"}, mode::declaration, true);
+  bool ends_with_body = !item.cxx.empty() && (item.cxx.back().kind == piece_kind::body ||
+                                              (item.cxx.back().kind == piece_kind::group &&
+                                               item.cxx.back().tok->is("{")));
+  if (at(";")) item.cxx.push_back(token_piece(take()));
+  else if (!ends_with_body && !at_end() && !diag_.saturated())
+    error(peek(), "expected ';' after the declaration");
+  else if (!ends_with_body && at_end() && !item.cxx.empty())
+    error(peek(), "expected ';' at the end of the file");
+  if (pos_ == start) take();  // always make progress
+
+  // Global meshes: `[static] mesh A, B = ..., C;` (not `mesh f(...)`).
+  const pieces& run = item.cxx;
+  std::size_t i = 0;
+  if (i < run.size() && is_token(run[i], "static")) ++i;
+  if (i < run.size() && is_token(run[i], "mesh")) {
+    for (++i; i < run.size(); ++i) {
+      if (run[i].kind != piece_kind::token || !run[i].tok->is_identifier()) break;
+      const token* name = run[i].tok;
+      std::size_t j = i + 1;
+      if (j < run.size() && run[j].kind == piece_kind::group && run[j].tok->is("(")) break;  // a function
+      p.global_meshes.push_back(name);
+      while (j < run.size() && !is_token(run[j], ",") && !is_token(run[j], ";")) ++j;
+      if (j >= run.size() || is_token(run[j], ";")) break;
+      i = j;  // the comma; the loop steps to the next name
+    }
+  }
+  for (std::size_t k = start; k < pos_; ++k) {
+    int w = toks_[k].is_identifier() ? property_index(toks_[k].text) : -1;
+    if (w >= 0 && !first_use_[w]) first_use_[w] = &toks_[k];
+  }
+  p.items.push_back(std::move(item));
+}
+
+// A data member of a property block: a declaration that is no function,
+// type, alias or static. Its declarators name the fields; those without an
+// initialiser get `{}` so every property starts value-initialised.
+void parser::analyse_fields(property_block& b) {
+  const pieces& m = b.members;
+  std::size_t begin = 0;
+  for (std::size_t i = 0; i <= m.size(); ++i) {
+    bool ends = i == m.size() || is_token(m[i], ";") || m[i].kind == piece_kind::body;
+    if (!ends) continue;
+    std::size_t s = begin, e = i;
+    begin = i + 1;
+    while (s + 1 < e && m[s].kind == piece_kind::token &&
+           (m[s].tok->is_word("public") || m[s].tok->is_word("private") || m[s].tok->is_word("protected")) &&
+           is_token(m[s + 1], ":"))
+      s += 2;
+    if (s >= e || (i < m.size() && m[i].kind == piece_kind::body)) continue;
+    const piece& head = m[s];
+    if (head.kind == piece_kind::token && head.tok->is_identifier()) {
+      std::string_view w = head.tok->text;
+      if (w == "static" || w == "typedef" || w == "using" || w == "friend" || w == "template" ||
+          w == "enum" || w == "struct" || w == "class" || w == "union" || w == "virtual" ||
+          w == "explicit" || w == "operator" || w == "constexpr" || w == "inline")
+        continue;
+    }
+    // Split into declarators at commas outside template brackets; a `(`
+    // outside them before any `=` makes it a function declaration.
+    std::vector<std::pair<std::size_t, std::size_t>> declarators;
+    int angle = 0;
+    bool function = false, seen_init = false;
+    std::size_t d = s;
+    for (std::size_t k = s; k < e; ++k) {
+      const piece& q = m[k];
+      if (is_token(q, "<")) ++angle;
+      else if (is_token(q, ">")) --angle;
+      else if (is_token(q, ">>")) angle -= 2;
+      else if (is_token(q, "=")) seen_init = true;
+      else if (angle <= 0 && !seen_init && q.kind == piece_kind::group && q.tok->is("(")) function = true;
+      else if (angle <= 0 && is_token(q, ",")) {
+        declarators.push_back({d, k});
+        d = k + 1;
+        seen_init = false;
+      }
+    }
+    if (function) continue;
+    declarators.push_back({d, e});
+    bool type_has_handle = false;
+    for (std::size_t di = 0; di < declarators.size(); ++di) {
+      auto [ds, de] = declarators[di];
+      std::size_t name = de, stop = de;
+      for (std::size_t k = ds; k < de; ++k) {
+        const piece& q = m[k];
+        if (is_token(q, "=") || is_token(q, ":") || (q.kind == piece_kind::group && q.tok->is("{")) ||
+            (q.kind == piece_kind::group && q.tok->is("["))) {
+          stop = k;
+          break;
+        }
+        if (q.kind == piece_kind::token && q.tok->is_identifier()) name = k;
+      }
+      if (name == de) {
+        error(*m[ds].tok, "expected a property name in this declaration");
+        continue;
+      }
+      bool pointer = false;
+      for (std::size_t k = ds; k < name; ++k) {
+        if (is_token(m[k], "*") || is_token(m[k], "&")) pointer = true;
+        if (di == 0 && (is_token(m[k], "vertex") || is_token(m[k], "mesh"))) type_has_handle = true;
+      }
+      const token* name_tok = m[name].tok;
+      if (name_tok->text == "nb") error(*name_tok, "the property name 'nb' is reserved (it holds the neighbourhood in .vvm files)");
+      b.fields.push_back({name_tok, !pointer && !type_has_handle});
+      // Value-initialise unless there is an initialiser or a bit-field width.
+      std::size_t k = stop;
+      while (k < de && m[k].kind == piece_kind::group && m[k].tok->is("[")) ++k;
+      bool has_init = k < de && (is_token(m[k], "=") || is_token(m[k], ":") ||
+                                 (m[k].kind == piece_kind::group && m[k].tok->is("{")));
+      if (!has_init) {
+        const piece& last = m[k - 1];
+        b.value_init_after.push_back(last.kind == piece_kind::group ? last.close : last.tok);
+      }
+    }
+  }
+}
+
+}  // namespace vvc

@@ -1,0 +1,319 @@
+// vv expressions: queries, the old state, property access, paths and
+// half-edge records, and the operands they take.
+#include <iterator>
+
+#include "parser.hpp"
+#include "words.hpp"
+
+namespace vvc {
+
+namespace {
+
+// From an opening "(" at index i, the index of its matching ")" (or npos).
+std::size_t matching_paren(const std::vector<token>& toks, std::size_t i) {
+  int depth = 0;
+  for (std::size_t k = i; k < toks.size(); ++k) {
+    if (toks[k].is("(")) ++depth;
+    if (toks[k].is(")") && --depth == 0) return k;
+    if (toks[k].kind == tok::eof || toks[k].is(";")) break;
+  }
+  return std::string::npos;
+}
+
+
+}  // namespace
+
+bool parser::starts_operand(const token& t) const {
+  switch (t.kind) {
+    case tok::identifier:
+      return !is_expression_keyword(t.text) || t.text == "sizeof" || t.text == "new";
+    case tok::number:
+    case tok::string:
+    case tok::character:
+    case tok::backtick:
+    case tok::at:
+      return true;
+    case tok::punct:
+      return t.text == "(" || t.text == "!" || t.text == "~" || t.text == "::" || t.text == "*" ||
+             t.text == "&" || t.text == "-" || t.text == "+" || t.text == "++" || t.text == "--";
+    default:
+      return false;
+  }
+}
+
+// vv-expression = "`" ... | path | query
+bool parser::parse_vv_expression(pieces& out) {
+  const token& t = peek();
+  if (t.kind == tok::backtick) {
+    out.push_back(parse_old_state());
+    return true;
+  }
+  if (t.kind == tok::at) {
+    out.push_back(parse_path());
+    return true;
+  }
+  if (!t.is_identifier()) return false;
+  std::string_view w = t.text;
+  bool query = w == "nextto" || w == "prevto" || w == "valence" || w == "labelof";
+  if ((w == "next" || w == "prev") && peek(1).is("(")) {
+    std::size_t close = matching_paren(toks_, pos_ + 1);
+    query = close != std::string::npos && close + 1 < toks_.size() && toks_[close + 1].is_word("to");
+  }
+  if ((w == "any" || w == "flagged") && peek(1).is_word("in")) query = true;
+  if (w == "is" && starts_operand(peek(1))) {
+    piece p;
+    if (attempt([&] {
+          p = parse_query();
+          return true;
+        })) {
+      out.push_back(std::move(p));
+      return true;
+    }
+    return false;
+  }
+  if (!query) return false;
+  out.push_back(parse_query());
+  return true;
+}
+
+// query = ("nextto" | "prevto") ("flag" | operand) "in" operand
+//       | ("next" | "prev") "(" run ")" "to" operand "in" operand
+//       | ("any" | "flagged") "in" operand
+//       | ("valence" | "labelof") operand
+//       | "is" operand "in" operand
+piece parser::parse_query() {
+  piece p;
+  p.kind = piece_kind::query;
+  p.tok = take();
+  std::string w(p.tok->text);
+  std::string after_kw = "after '" + w + "'";
+  auto operand_in_target = [&](const std::string& what) {
+    p.parts.push_back(parse_operand(after_kw));
+    expect("in", "after " + what + " of '" + w + "'");
+    p.parts.push_back(parse_operand("after 'in'"));
+  };
+  if (w == "nextto" || w == "prevto") {
+    if (at("flag") && peek(1).is_word("in")) {
+      take();
+      take();
+      p.query = w == "nextto" ? query_kind::next_to_flag : query_kind::prev_to_flag;
+      p.parts.push_back(parse_operand("after 'in'"));
+    } else {
+      p.query = w == "nextto" ? query_kind::next_to : query_kind::prev_to;
+      operand_in_target("the operand");
+    }
+  } else if (w == "next" || w == "prev") {
+    p.query = w == "next" ? query_kind::next_i_to : query_kind::prev_i_to;
+    take();  // (
+    pieces count = parse_run({}, mode::expression);
+    if (count.empty()) error(peek(), "expected the number of steps in '" + w + "(...)to'");
+    expect(")", "after the number of steps");
+    expect("to", "after '" + w + "(...)'");
+    p.parts.push_back(std::move(count));
+    operand_in_target("the operand");
+  } else if (w == "any" || w == "flagged") {
+    p.query = w == "any" ? query_kind::any_in : query_kind::flagged_in;
+    take();  // in
+    p.parts.push_back(parse_operand("after 'in'"));
+  } else if (w == "valence" || w == "labelof") {
+    p.query = w == "valence" ? query_kind::valence : query_kind::label_of;
+    p.parts.push_back(parse_operand(after_kw));
+  } else {  // is
+    p.query = query_kind::is_in;
+    operand_in_target("the operand");
+  }
+  return p;
+}
+
+// operand = prefix-op operand | vv-expression postfix* | "(" run ")" postfix*
+//         | primary postfix*
+// primary = ["::"] name {"::" name} [template-arguments] | literal {literal}
+pieces parser::parse_operand(const std::string& context) {
+  pieces out;
+  const token& t = peek();
+  if (t.kind == tok::punct && (t.text == "!" || t.text == "~" || t.text == "-" || t.text == "+" ||
+                               t.text == "*" || t.text == "&" || t.text == "++" || t.text == "--")) {
+    out.push_back(token_piece(take()));
+    pieces rest = parse_operand(context);
+    out.insert(out.end(), std::make_move_iterator(rest.begin()), std::make_move_iterator(rest.end()));
+    return out;
+  }
+  if (parse_vv_expression(out)) {
+    if (out.back().kind != piece_kind::query) parse_postfix(out, true);
+    return out;
+  }
+  if (t.is("(")) {
+    out.push_back(parse_group(out, mode::expression));
+    parse_postfix(out, true);
+    return out;
+  }
+  bool name = t.is_identifier() && !is_expression_keyword(t.text) && !is_reserved_vv_word(t.text);
+  if (t.is("::") || name) {
+    if (t.is("::")) out.push_back(token_piece(take()));
+    if (!peek().is_identifier()) {
+      error(peek(), "expected a name after '::'");
+      return out;
+    }
+    out.push_back(token_piece(take()));
+    parse_postfix(out, true);
+    return out;
+  }
+  if (t.kind == tok::number || t.kind == tok::character) {
+    out.push_back(token_piece(take()));
+    parse_postfix(out, true);
+    return out;
+  }
+  if (t.kind == tok::string) {
+    while (peek().kind == tok::string) out.push_back(token_piece(take()));
+    return out;
+  }
+  std::string found = t.kind == tok::eof ? "the end of the file" : "'" + std::string(t.text) + "'";
+  error(t, "expected a vertex " + context + ", found " + found);
+  return out;
+}
+
+// postfix = "(" run ")" | "[" run "]" | ("." | "->" | "::") name
+//         | "$" name | "++" | "--" | template-arguments "(" run ")"
+void parser::parse_postfix(pieces& out, bool allow_property) {
+  while (!at_end()) {
+    const token& t = peek();
+    if (t.is("(") || t.is("[")) {
+      out.push_back(parse_group(out, mode::expression));
+    } else if (t.is(".") || t.is("->") || t.is("::")) {
+      out.push_back(token_piece(take()));
+      if (peek().is_word("template")) out.push_back(token_piece(take()));
+      if (peek().is("~")) out.push_back(token_piece(take()));
+      if (!peek().is_identifier()) {
+        error(peek(), "expected a member name after '" + std::string(t.text) + "'");
+        return;
+      }
+      out.push_back(token_piece(take()));
+    } else if (t.kind == tok::dollar && allow_property) {
+      take();
+      if (!peek().is_identifier()) {
+        error(peek(), "expected a property name after '$'");
+        return;
+      }
+      piece p;
+      p.kind = piece_kind::property;
+      p.tok = take();
+      out.push_back(std::move(p));
+    } else if (t.is("++") || t.is("--")) {
+      out.push_back(token_piece(take()));
+    } else if (t.is("<") && out.back().kind == piece_kind::token && out.back().tok->is_identifier()) {
+      // Template arguments, when a call or scope follows them: f<int>(x).
+      std::size_t k = pos_;
+      int angle = 0, paren = 0;
+      for (; k < toks_.size(); ++k) {
+        const token& u = toks_[k];
+        if (u.is("(") || u.is("[")) ++paren;
+        else if (u.is(")") || u.is("]")) --paren;
+        else if (paren == 0 && u.is("<")) ++angle;
+        else if (paren == 0 && u.is(">")) --angle;
+        else if (paren == 0 && u.is(">>")) angle -= 2;
+        if (paren < 0 || u.is(";") || u.is("{") || u.is("}") || u.kind == tok::eof) return;
+        if (angle <= 0) break;
+      }
+      if (angle != 0 || k + 1 >= toks_.size() ||
+          !(toks_[k + 1].is("(") || toks_[k + 1].is("::") || toks_[k + 1].is("{")))
+        return;
+      while (pos_ <= k) {
+        if (peek().is("(") || peek().is("[")) out.push_back(parse_group(out, mode::expression));
+        else out.push_back(token_piece(take()));
+      }
+    } else {
+      return;
+    }
+  }
+}
+
+// old-state = "`" ( "`" old-state | path | "(" run ")" postfix* | primary postfix* )
+// with postfix not taking "$": `v$pos is (`v)$pos.
+piece parser::parse_old_state() {
+  piece p;
+  p.kind = piece_kind::old_state;
+  p.tok = take();
+  if (peek().kind == tok::at) {
+    piece path = parse_path();
+    path.old = true;
+    path.tok = p.tok;
+    return path;
+  }
+  pieces operand;
+  const token& t = peek();
+  if (t.kind == tok::backtick) {
+    operand.push_back(parse_old_state());
+  } else if (t.is("(")) {
+    operand.push_back(parse_group(operand, mode::expression));
+    parse_postfix(operand, false);
+  } else if ((t.is_identifier() && !is_expression_keyword(t.text) && !is_reserved_vv_word(t.text)) ||
+             t.is("::")) {
+    if (t.is("::")) operand.push_back(token_piece(take()));
+    if (peek().is_identifier()) operand.push_back(token_piece(take()));
+    parse_postfix(operand, false);
+  } else {
+    std::string found = t.kind == tok::eof ? "the end of the file" : "'" + std::string(t.text) + "'";
+    error(t, "expected a vertex after '`', found " + found);
+  }
+  p.parts.push_back(std::move(operand));
+  return p;
+}
+
+// path = "@" ["&"] "(" run "," run ")" { ("next" | "prev" | "swap") [","] } "@"
+piece parser::parse_path() {
+  piece p;
+  p.kind = piece_kind::path;
+  p.tok = take();
+  p.assign = accept("&");
+  if (!at("(")) {
+    error(*p.tok, "stray '@' in program (a path starts with '@(' or '@&(')");
+    return p;
+  }
+  take();
+  p.parts.push_back(parse_run({","}, mode::expression));
+  expect(",", "between the two vertices of a path");
+  p.parts.push_back(parse_run({","}, mode::expression));
+  expect(")", "after the two vertices of a path");
+  if (p.assign)
+    for (const pieces& v : p.parts)
+      if (v.size() != 1 || v[0].kind != piece_kind::token || !v[0].tok->is_identifier())
+        error(*p.tok, "the vertices of '@&(a, b)' must be variables: the path assigns its final pair to them");
+  while (true) {
+    const token& t = peek();
+    if (t.kind == tok::at) {
+      p.close = take();
+      break;
+    }
+    if (t.is(",")) {
+      take();
+      continue;
+    }
+    if (t.is_word("next") || t.is_word("prev") || t.is_word("swap")) {
+      p.ops.push_back(take());
+      continue;
+    }
+    if (t.kind == tok::eof || t.is(";") || t.is("}")) {
+      error(*p.tok, "unterminated path: no closing '@'");
+      break;
+    }
+    error(t, "unknown path operation '" + std::string(t.text) + "' (expected next, prev or swap)");
+    take();
+  }
+  return p;
+}
+
+// edge-access = "(" ["`"] operand ("^" | "|") operand ")"
+bool parser::parse_edge_access(piece& out) {
+  out = piece();
+  out.kind = piece_kind::edge_access;
+  take();  // (
+  out.parts.push_back(parse_operand("before '^' or '|'"));
+  if (!at("^") && !at("|")) return false;
+  out.tok = take();
+  out.parts.push_back(parse_operand("after '" + std::string(out.tok->text) + "'"));
+  if (!at(")")) return false;
+  out.close = take();
+  return true;
+}
+
+}  // namespace vvc

@@ -1,0 +1,46 @@
+#include "source.hpp"
+
+#include <cerrno>
+#include <cstring>
+#include <fstream>
+#include <sstream>
+
+namespace vvc {
+
+source_file::source_file(std::string p, std::string t) : path(std::move(p)), text(std::move(t)) {
+  line_starts.push_back(0);
+  for (std::size_t i = 0; i < text.size(); ++i)
+    if (text[i] == '\n') line_starts.push_back(i + 1);
+}
+
+std::string_view source_file::line(int n) const {
+  if (n < 1 || static_cast<std::size_t>(n) > line_starts.size()) return {};
+  std::size_t begin = line_starts[static_cast<std::size_t>(n - 1)];
+  std::size_t end = text.find('\n', begin);
+  if (end == std::string::npos) end = text.size();
+  if (end > begin && text[end - 1] == '\r') --end;
+  return std::string_view(text).substr(begin, end - begin);
+}
+
+std::string source_file::folder() const {
+  std::size_t slash = path.find_last_of('/');
+  return slash == std::string::npos ? std::string() : path.substr(0, slash + 1);
+}
+
+const source_file* source_set::load(const std::string& path, std::string* why) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) {
+    if (why) *why = std::strerror(errno);
+    return nullptr;
+  }
+  std::ostringstream ss;
+  ss << in.rdbuf();
+  return add(path, ss.str());
+}
+
+const source_file* source_set::add(std::string path, std::string text) {
+  files_.push_back(std::make_unique<source_file>(std::move(path), std::move(text)));
+  return files_.back().get();
+}
+
+}  // namespace vvc

@@ -1,0 +1,35 @@
+// Source files held in memory for the whole translation: tokens and
+// diagnostics refer into them by pointer, so they never move.
+#pragma once
+
+#include <memory>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace vvc {
+
+struct source_file {
+  std::string path;
+  std::string text;
+  std::vector<std::size_t> line_starts;  // offset of each line's first byte
+
+  source_file(std::string p, std::string t);
+  //! Line n (1-based) without its newline.
+  std::string_view line(int n) const;
+  //! The folder part of path ("" or ending in '/').
+  std::string folder() const;
+};
+
+class source_set {
+ public:
+  //! Reads a file; nullptr (and *why set) when it cannot be read.
+  const source_file* load(const std::string& path, std::string* why);
+  //! Adds text under a name (tests, fuzzing, standard input).
+  const source_file* add(std::string path, std::string text);
+
+ private:
+  std::vector<std::unique_ptr<source_file>> files_;
+};
+
+}  // namespace vvc

@@ -1,0 +1,34 @@
+#include "translate.hpp"
+
+#include "emitter.hpp"
+#include "lexer.hpp"
+#include "parser.hpp"
+
+namespace vvc {
+
+const char* version() { return "0.1.0"; }
+
+namespace {
+void run(translation& t, const source_file& file) {
+  std::vector<token> tokens = lex(file, t.sources, t.diag);
+  program p = parser(tokens, t.diag).parse_program();
+  if (t.diag.any()) return;
+  t.cpp = emit(p, emit_options{version()});
+  t.ok = true;
+}
+}  // namespace
+
+translation translate_file(const std::string& path, std::string* unreadable) {
+  translation t;
+  const source_file* f = t.sources.load(path, unreadable);
+  if (f) run(t, *f);
+  return t;
+}
+
+translation translate_text(const std::string& name, std::string text) {
+  translation t;
+  run(t, *t.sources.add(name, std::move(text)));
+  return t;
+}
+
+}  // namespace vvc

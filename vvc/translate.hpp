@@ -1,0 +1,27 @@
+// Translation of one .vvp file (and the .vvp files it includes) to C++.
+#pragma once
+
+#include <string>
+
+#include "diagnostics.hpp"
+#include "source.hpp"
+
+namespace vvc {
+
+struct translation {
+  bool ok = false;
+  std::string cpp;          // the C++ (empty unless ok)
+  source_set sources;       // the files the diagnostics point into
+  diagnostics diag;
+};
+
+//! Translates a file. A file that cannot be read is an error of its own
+//! (diag is empty, cpp holds nothing, and `unreadable` says why).
+translation translate_file(const std::string& path, std::string* unreadable);
+//! Translates text that stands for the file `name`.
+translation translate_text(const std::string& name, std::string text);
+
+//! The translator's version.
+const char* version();
+
+}  // namespace vvc
