@@ -1,5 +1,7 @@
 #include "diagnostics.hpp"
 
+#include <algorithm>
+
 namespace vvc {
 
 void diagnostics::error(const token& at, std::string message) {
@@ -11,7 +13,19 @@ void diagnostics::error(const source_file* file, int line, int col, std::string 
   // The same place twice means recovery went round once more: keep one.
   for (const auto& d : list_)
     if (d.file == file && d.line == line && d.col == col) return;
-  list_.push_back({file, line, col, std::move(message)});
+  std::size_t rank = file_rank(file);
+  auto later = std::find_if(list_.begin(), list_.end(), [&](const diagnostic& d) {
+    std::size_t r = file_rank(d.file);
+    return r > rank || (r == rank && (d.line > line || (d.line == line && d.col > col)));
+  });
+  list_.insert(later, {file, line, col, std::move(message)});
+}
+
+std::size_t diagnostics::file_rank(const source_file* f) {
+  auto it = std::find(files_.begin(), files_.end(), f);
+  if (it != files_.end()) return static_cast<std::size_t>(it - files_.begin());
+  files_.push_back(f);
+  return files_.size() - 1;
 }
 
 std::string format(const diagnostic& d) {
@@ -23,9 +37,15 @@ std::string format(const diagnostic& d) {
     out += "  ";
     out += text;
     out += "\n  ";
-    // Keep tabs so the caret lines up under the same column.
-    for (int i = 1; i < d.col && static_cast<std::size_t>(i - 1) < text.size(); ++i)
-      out += text[static_cast<std::size_t>(i - 1)] == '\t' ? '\t' : ' ';
+    // One space (or tab, to line up) per character before the column;
+    // columns count characters, so UTF-8 continuation bytes add nothing.
+    int col = 1;
+    for (std::size_t i = 0; i < text.size() && col < d.col; ++i) {
+      unsigned char c = static_cast<unsigned char>(text[i]);
+      if ((c & 0xC0) == 0x80) continue;
+      out += c == '\t' ? '\t' : ' ';
+      ++col;
+    }
     out += "^\n";
   }
   return out;

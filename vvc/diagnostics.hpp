@@ -25,16 +25,18 @@ class diagnostics {
   const std::vector<diagnostic>& list() const { return list_; }
   //! Writes every diagnostic in the order found.
   void print(std::ostream& os) const;
-  //! For trial parses: how many there are now, and forgetting newer ones.
-  std::size_t mark() const { return list_.size(); }
-  void rollback(std::size_t mark) { list_.resize(mark); }
   //! Too many errors: later ones are dropped and translation gives up.
   bool saturated() const { return list_.size() >= limit; }
 
   static constexpr std::size_t limit = 25;
 
  private:
+  // Kept in source order (files in the order they first had an error), so
+  // the first message is the first problem even when it is found last (an
+  // unterminated block is noticed at the end of the file).
+  std::size_t file_rank(const source_file* f);
   std::vector<diagnostic> list_;
+  std::vector<const source_file*> files_;
 };
 
 //! One diagnostic as text (with its source line and caret).

@@ -326,8 +326,10 @@ class emitter {
             w_.text(" = vv_new_vertex_with(");
             comma_list(d.args, 0);
             w_.text(")");
-          } else {
+          } else if (d.how == vertex_declarator::reference) {
             w_.text(" = ");
+            emit(d.args[0]);
+          } else {
             emit(d.args[0]);
           }
           w_.text(";");

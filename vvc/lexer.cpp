@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cctype>
+#include <cstdio>
 #include <cstring>
 #include <string>
 
@@ -60,7 +61,7 @@ class lexer {
       token t;
       t.file = &f_;
       t.line = line_;
-      t.col = static_cast<int>(pos_ - line_begin_) + 1;
+      t.col = column(pos_);
       t.space_before = space;
       t.line_start = line_start;
       std::size_t begin = pos_;
@@ -81,21 +82,41 @@ class lexer {
  private:
   bool starts(std::string_view p) const { return std::string_view(s_).substr(pos_, p.size()) == p; }
 
-  void error_here(std::size_t at, int line, std::size_t line_begin, const std::string& msg) {
-    diag_.error(&f_, line, static_cast<int>(at - line_begin) + 1, msg);
+  void error_here(std::size_t at, int line, const std::string& msg) {
+    diag_.error(&f_, line, line == line_ ? column(at) : column_in(line, at), msg);
+  }
+
+  // Columns count characters, not bytes (as compilers report them): UTF-8
+  // continuation bytes do not start a column. Counted from the last place
+  // asked on the same line, so long lines stay linear.
+  int column(std::size_t at) {
+    if (col_line_ != line_ || at < col_pos_) {
+      col_line_ = line_;
+      col_pos_ = line_begin_;
+      col_ = 1;
+    }
+    for (; col_pos_ < at; ++col_pos_)
+      if ((static_cast<unsigned char>(s_[col_pos_]) & 0xC0) != 0x80) ++col_;
+    return col_;
+  }
+  int column_in(int line, std::size_t at) const {
+    std::size_t begin = f_.line_starts[static_cast<std::size_t>(line - 1)];
+    int col = 1;
+    for (std::size_t i = begin; i < at; ++i)
+      if ((static_cast<unsigned char>(s_[i]) & 0xC0) != 0x80) ++col;
+    return col;
   }
 
   void block_comment() {
     std::size_t at = pos_;
     int line = line_;
-    std::size_t lb = line_begin_;
     pos_ += 2;
     while (pos_ < s_.size() && !starts("*/")) {
       if (s_[pos_] == '\n') ++line_, line_begin_ = pos_ + 1;
       ++pos_;
     }
     if (pos_ >= s_.size()) {
-      error_here(at, line, lb, "unterminated comment: '/*' has no '*/'");
+      error_here(at, line, "unterminated comment: '/*' has no '*/'");
       return;
     }
     pos_ += 2;
@@ -171,13 +192,39 @@ class lexer {
     for (std::string_view p : punctuators)
       if (starts(p)) return pos_ += p.size(), t.kind = tok::punct, true;
     if (single_punct.find(c) != std::string_view::npos) return ++pos_, t.kind = tok::punct, true;
-    std::string shown = std::isprint(static_cast<unsigned char>(c))
-                            ? std::string("'") + c + "'"
-                            : "byte " + std::to_string(static_cast<unsigned char>(c));
-    error_here(pos_, line_, line_begin_, "stray " + shown + " in program");
-    ++pos_;
-    while (pos_ < s_.size() && (static_cast<unsigned char>(s_[pos_]) & 0xC0) == 0x80) ++pos_;
+    std::size_t at = pos_;
+    error_here(at, line_, "stray " + describe_stray() + " in program");
     return false;
+  }
+
+  // Names the character at pos_ and steps over it: 'x', '×' (U+00D7), or
+  // "byte 0xC3" when it is not valid UTF-8.
+  std::string describe_stray() {
+    unsigned char c = static_cast<unsigned char>(s_[pos_]);
+    if (c < 0x80) {
+      ++pos_;
+      if (std::isprint(c)) return std::string("'") + static_cast<char>(c) + "'";
+      return "byte " + std::to_string(c);
+    }
+    int n = c >= 0xF0 ? 4 : c >= 0xE0 ? 3 : c >= 0xC0 ? 2 : 0;
+    unsigned long cp = n == 4 ? (c & 0x07u) : n == 3 ? (c & 0x0Fu) : (c & 0x1Fu);
+    bool valid = n > 0 && pos_ + static_cast<std::size_t>(n) <= s_.size();
+    for (int i = 1; valid && i < n; ++i) {
+      unsigned char d = static_cast<unsigned char>(s_[pos_ + static_cast<std::size_t>(i)]);
+      valid = (d & 0xC0) == 0x80;
+      cp = (cp << 6) | (d & 0x3Fu);
+    }
+    if (!valid) {
+      ++pos_;
+      char hex[8];
+      std::snprintf(hex, sizeof hex, "0x%02X", c);
+      return std::string("byte ") + hex;
+    }
+    std::string shown = s_.substr(pos_, static_cast<std::size_t>(n));
+    pos_ += static_cast<std::size_t>(n);
+    char code[16];
+    std::snprintf(code, sizeof code, "U+%04lX", cp);
+    return "'" + shown + "' (" + code + ")";
   }
 
   bool word(token& t) {
@@ -268,6 +315,9 @@ class lexer {
   std::size_t pos_ = 0;
   std::size_t line_begin_ = 0;
   int line_ = 1;
+  int col_line_ = 0;  // column() memo: line, byte position, column
+  std::size_t col_pos_ = 0;
+  int col_ = 1;
 };
 
 }  // namespace

@@ -19,12 +19,22 @@ bool parser::accept(std::string_view text) {
   return true;
 }
 
+std::string parser::found(const token& t) {
+  return t.kind == tok::eof ? "the end of the file" : "'" + std::string(t.text) + "'";
+}
+
 const token* parser::expect(std::string_view text, const std::string& context) {
   if (at(text)) return take();
-  const token& t = peek();
-  std::string found = t.kind == tok::eof ? "the end of the file" : "'" + std::string(t.text) + "'";
-  error(t, "expected '" + std::string(text) + "' " + context + ", found " + found);
+  error(peek(), "expected '" + std::string(text) + "' " + context + ", found " + found(peek()));
   return nullptr;
+}
+
+bool parser::enter() {
+  if (++nesting_ <= max_nesting) return true;
+  if (nesting_ == max_nesting + 1)
+    error(peek(), "nested too deeply (more than " + std::to_string(max_nesting) + " levels)");
+  pos_ = toks_.size() - 1;  // give up on the rest: it cannot be translated
+  return false;
 }
 
 void parser::recover() {

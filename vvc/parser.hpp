@@ -48,6 +48,8 @@ class parser {
   const token* expect(std::string_view text, const std::string& context);
   bool at_end() const { return peek().kind == tok::eof; }
   void error(const token& at, std::string message) { diag_.error(at, std::move(message)); }
+  //! How a message names a token: 'x', or "the end of the file".
+  static std::string found(const token& t);
   //! Skips to just after the next ; or to a } that closes the statement.
   void recover();
 
@@ -78,11 +80,12 @@ class parser {
   piece parse_old_state();
   piece parse_path();
   piece parse_query();
-  //! In a `(` group that is no call: `( operand ^ operand )` or with `|`.
-  bool parse_edge_access(piece& out);
-  //! Tries `parse`; on failure restores the cursor and the diagnostics.
-  template <class F>
-  bool attempt(F&& parse);
+  //! Turns a parenthesised group that holds exactly `operand ^ operand`
+  //! (or `|`) into an edge access.
+  static void as_edge_access(piece& group);
+  //! The index just after the operand starting at token i (npos if none),
+  //! found by scanning tokens: decides `is X in V` without backtracking.
+  std::size_t scan_operand(std::size_t i) const;
 
   // ---- statements (parser_statements.cpp) ----
   stmt_ptr parse_statement();
@@ -106,17 +109,25 @@ class parser {
   diagnostics& diag_;
   std::size_t pos_ = 0;
   int depth_ = 0;             // nesting of bodies (0: top level)
+  int nesting_ = 0;           // groups, operands and statements open now
+  //! Guards recursion: past max_nesting the input is given up on (with an
+  //! error), so no input can exhaust the stack.
+  bool enter();
+  void leave() { --nesting_; }
+  static constexpr int max_nesting = 256;
+  class nesting_guard {
+   public:
+    explicit nesting_guard(parser& p) : p_(p), ok_(p.enter()) {}
+    nesting_guard(const nesting_guard&) = delete;
+    nesting_guard& operator=(const nesting_guard&) = delete;
+    ~nesting_guard() { p_.leave(); }
+    bool ok() const { return ok_; }
+
+   private:
+    parser& p_;
+    bool ok_;
+  };
   const token* first_use_[3] = {nullptr, nullptr, nullptr};  // edge, vertex, mesh outside blocks
 };
-
-template <class F>
-bool parser::attempt(F&& parse) {
-  std::size_t pos = pos_;
-  std::size_t mark = diag_.mark();
-  if (parse() && diag_.mark() == mark) return true;
-  pos_ = pos;
-  diag_.rollback(mark);
-  return false;
-}
 
 }  // namespace vvc

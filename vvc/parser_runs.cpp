@@ -50,11 +50,11 @@ pieces parser::parse_run(std::initializer_list<std::string_view> stops, mode m,
     }
     if (parse_vv_expression(out)) continue;
     if (t.kind == tok::dollar) {
-      if (!ends_operand(out)) error(t, "'$' must follow a vertex (as in v$pos)");
+      if (!ends_operand(out)) error(t, "'$' must follow a vertex, as in v$pos");
       take();
       const token& name = peek();
       if (!name.is_identifier()) {
-        error(name, "expected a property name after '$'");
+        error(name, "expected a property name after '$', found " + found(name));
         continue;
       }
       piece p;
@@ -75,11 +75,14 @@ pieces parser::parse_run(std::initializer_list<std::string_view> stops, mode m,
 //       | "{" declarations "}" (a class or namespace body)
 // A `(` that is no call may hold an edge access (X ^ Y) or (X | Y).
 piece parser::parse_group(const pieces& before, mode m) {
-  const token& open_tok = peek();
-  if (open_tok.text == "(" && !ends_operand(before)) {
-    piece e;
-    if (attempt([&] { return parse_edge_access(e); })) return e;
+  nesting_guard guard(*this);
+  if (!guard.ok()) {
+    piece none;
+    none.tok = &peek();
+    return none;
   }
+  const token& open_tok = peek();
+  const bool maybe_edge = open_tok.text == "(" && !ends_operand(before);
   piece p;
   p.kind = piece_kind::group;
   p.tok = take();
@@ -101,9 +104,12 @@ piece parser::parse_group(const pieces& before, mode m) {
   std::string_view want = closer_of(p.tok->text);
   if (peek().is(want)) {
     p.close = take();
+    if (maybe_edge) as_edge_access(p);
   } else if (at_end()) {
-    error(*p.tok, std::string("unterminated '") + std::string(p.tok->text) + "': no matching '" +
-                      std::string(want) + "'");
+    error(*p.tok, p.kind == piece_kind::body || p.kind == piece_kind::class_body
+                      ? std::string("unterminated block: this '{' has no matching '}'")
+                      : std::string("unterminated '") + std::string(p.tok->text) + "': no matching '" +
+                            std::string(want) + "'");
   } else {
     error(peek(), "expected '" + std::string(want) + "' to close the '" +
                       std::string(p.tok->text) + "' at line " + std::to_string(p.tok->line) +

@@ -66,6 +66,8 @@ stmt_ptr parser::parse_compound() {
 //           | ("case" run | "default" | name) ":"
 //           | forall | edit | vertex-declaration | run ";"
 stmt_ptr parser::parse_statement() {
+  nesting_guard guard(*this);
+  if (!guard.ok()) return make_stmt(stmt_kind::empty, &peek());
   const token& t = peek();
   if (t.kind == tok::preproc) return make_stmt(stmt_kind::preproc, take());
   if (t.is("{")) return parse_compound();
@@ -138,11 +140,11 @@ stmt_ptr parser::parse_statement() {
       if (!parse_edit(*s)) recover();
       return s;
     }
-    if (w == "vertex") {
+    // `vertex& r = v;`, `vertex* p;`, `vertex::x`: plain C++.
+    if (w == "vertex" && peek(1).is_identifier() && !is_reserved_vv_word(peek(1).text)) {
       auto s = make_stmt(stmt_kind::vertex_decl, &t);
-      std::size_t start = pos_;
-      if (attempt([&] { return parse_vertex_declaration(*s); })) return s;
-      pos_ = start;  // `vertex& r = v;`, `vertex* p;`, `vertex a[4];`: plain C++
+      if (!parse_vertex_declaration(*s)) recover();
+      return s;
     }
   }
   return parse_simple();
@@ -152,6 +154,7 @@ stmt_ptr parser::parse_statement() {
 stmt_ptr parser::parse_simple() {
   auto s = make_stmt(stmt_kind::simple, &peek());
   s->head = parse_run({";"}, mode::expression);
+  if (at_end()) return s;  // inside an unterminated block, which reports itself
   s->end = expect(";", "at the end of the statement");
   if (!s->end) recover();
   return s;
@@ -164,7 +167,10 @@ bool parser::edit_follows() const {
   std::string_view w = peek().text;
   if (w == "synchronise" || w == "synchronize") return true;
   const token& next = peek(1);
-  if (w == "make") return next.is("{");
+  if (w == "make") return next.is("{") || next.is_word("nb_of");
+  // The operand is missing but the edit's next word is there: `add to M;`.
+  if (next.is_word(continuation_of(w)) || (w == "splice" && (next.is_word("after") || next.is_word("before"))))
+    return true;
   if (next.is("(")) {
     if (w == "splice") return false;
     int depth = 0;
@@ -198,15 +204,19 @@ bool parser::parse_edit(stmt& s) {
   bool ok = true;
   if (w == "make") {
     s.edit = edit_kind::make;
+    if (!at("{")) {
+      error(peek(), "expected '{' to start the list of 'make', found " + found(peek()));
+      return false;
+    }
     const token* open = take();
     std::vector<pieces> list;
     while (!at("}") && !at_end()) {
-      list.push_back(parse_run({","}, mode::expression));
+      list.push_back(parse_run({",", "nb_of", ";"}, mode::expression));
       if (list.back().empty()) error(peek(), "expected a vertex in the list of 'make'");
       if (!accept(",")) break;
     }
     if (!accept("}")) {
-      error(at_end() ? *open : peek(), "expected '}' to end the list of 'make'");
+      error(at_end() ? *open : peek(), "expected '}' to end the list of 'make', found " + found(peek()));
       return false;
     }
     ok = word("nb_of", "after the list of 'make'");
@@ -236,10 +246,14 @@ bool parser::parse_edit(stmt& s) {
     ok = ok && word("in", "in 'replace ... with ... in ...'");
     if (ok) operand("after 'in'");
   } else if (w == "splice") {
+    if (at("after") || at("before")) {
+      error(peek(), "expected a vertex after 'splice', found " + found(peek()));
+      return false;
+    }
     operand("after 'splice'");
     bool after = at("after");
     if (!after && !at("before")) {
-      error(peek(), "expected 'after' or 'before' in 'splice'");
+      error(peek(), "expected 'after' or 'before' in 'splice', found " + found(peek()));
       return false;
     }
     take();
@@ -287,28 +301,40 @@ stmt_ptr parser::parse_forall() {
 }
 
 // vertex-declaration = "vertex" declarator {"," declarator} ";"
-// declarator = name | name "(" [run {"," run}] ")" | name "{" ... "}" | name "=" run
+// declarator = name                      (creates a vertex)
+//            | name "(" [run {"," run}] ")" | name "{" ... "}"   (with properties)
+//            | name "=" run              (a reference)
+//            | name "[" ... run          (an array of null handles, as in C++)
 bool parser::parse_vertex_declaration(stmt& s) {
   take();  // vertex
   while (true) {
-    if (!peek().is_identifier() || is_reserved_vv_word(peek().text)) return false;
+    if (!peek().is_identifier() || is_reserved_vv_word(peek().text)) {
+      error(peek(), "expected the name of a vertex in the declaration");
+      return false;
+    }
     vertex_declarator d;
     d.name = take();
     if (at("(") || at("{")) {
-      std::string_view close = at("(") ? ")" : "}";
-      take();
+      const token* open = take();
+      std::string_view close = open->is("(") ? ")" : "}";
       d.how = vertex_declarator::create_with;
       while (!at(close) && !at_end()) {
         d.args.push_back(parse_run({","}, mode::expression));
+        if (d.args.back().empty()) error(peek(), "expected an initial property value");
         if (!accept(",")) break;
       }
-      if (!accept(close)) return false;
+      if (!expect(close, "after the initial property values of '" + std::string(d.name->text) + "'"))
+        return false;
       if (d.args.empty()) d.how = vertex_declarator::create;
     } else if (accept("=")) {
       d.how = vertex_declarator::reference;
       d.args.push_back(parse_run({",", ";"}, mode::expression));
       if (d.args[0].empty()) error(peek(), "expected an initial value after '='");
+    } else if (at("[")) {
+      d.how = vertex_declarator::plain;
+      d.args.push_back(parse_run({",", ";"}, mode::expression));
     } else if (!at(",") && !at(";")) {
+      error(peek(), "expected ';', ',', '(' or '=' after the vertex '" + std::string(d.name->text) + "'");
       return false;
     }
     s.declarators.push_back(std::move(d));

@@ -2,6 +2,8 @@
 // half-edge records, and the operands they take.
 #include <iterator>
 
+#include <string>
+
 #include "parser.hpp"
 #include "words.hpp"
 
@@ -61,15 +63,8 @@ bool parser::parse_vv_expression(pieces& out) {
   }
   if ((w == "any" || w == "flagged") && peek(1).is_word("in")) query = true;
   if (w == "is" && starts_operand(peek(1))) {
-    piece p;
-    if (attempt([&] {
-          p = parse_query();
-          return true;
-        })) {
-      out.push_back(std::move(p));
-      return true;
-    }
-    return false;
+    std::size_t end = scan_operand(pos_ + 1);
+    query = end != std::string::npos && toks_[end].is_word("in");
   }
   if (!query) return false;
   out.push_back(parse_query());
@@ -130,6 +125,8 @@ piece parser::parse_query() {
 // primary = ["::"] name {"::" name} [template-arguments] | literal {literal}
 pieces parser::parse_operand(const std::string& context) {
   pieces out;
+  nesting_guard guard(*this);
+  if (!guard.ok()) return out;
   const token& t = peek();
   if (t.kind == tok::punct && (t.text == "!" || t.text == "~" || t.text == "-" || t.text == "+" ||
                                t.text == "*" || t.text == "&" || t.text == "++" || t.text == "--")) {
@@ -167,8 +164,7 @@ pieces parser::parse_operand(const std::string& context) {
     while (peek().kind == tok::string) out.push_back(token_piece(take()));
     return out;
   }
-  std::string found = t.kind == tok::eof ? "the end of the file" : "'" + std::string(t.text) + "'";
-  error(t, "expected a vertex " + context + ", found " + found);
+  error(t, "expected a vertex " + context + ", found " + found(t));
   return out;
 }
 
@@ -191,7 +187,7 @@ void parser::parse_postfix(pieces& out, bool allow_property) {
     } else if (t.kind == tok::dollar && allow_property) {
       take();
       if (!peek().is_identifier()) {
-        error(peek(), "expected a property name after '$'");
+        error(peek(), "expected a property name after '$', found " + found(peek()));
         return;
       }
       piece p;
@@ -230,6 +226,7 @@ void parser::parse_postfix(pieces& out, bool allow_property) {
 // old-state = "`" ( "`" old-state | path | "(" run ")" postfix* | primary postfix* )
 // with postfix not taking "$": `v$pos is (`v)$pos.
 piece parser::parse_old_state() {
+  nesting_guard guard(*this);
   piece p;
   p.kind = piece_kind::old_state;
   p.tok = take();
@@ -241,6 +238,10 @@ piece parser::parse_old_state() {
   }
   pieces operand;
   const token& t = peek();
+  if (!guard.ok()) {
+    p.parts.push_back(std::move(operand));
+    return p;
+  }
   if (t.kind == tok::backtick) {
     operand.push_back(parse_old_state());
   } else if (t.is("(")) {
@@ -252,8 +253,7 @@ piece parser::parse_old_state() {
     if (peek().is_identifier()) operand.push_back(token_piece(take()));
     parse_postfix(operand, false);
   } else {
-    std::string found = t.kind == tok::eof ? "the end of the file" : "'" + std::string(t.text) + "'";
-    error(t, "expected a vertex after '`', found " + found);
+    error(t, "expected a vertex after '" + std::string(p.tok->text) + "', found " + found(t));
   }
   p.parts.push_back(std::move(operand));
   return p;
@@ -276,8 +276,9 @@ piece parser::parse_path() {
   expect(")", "after the two vertices of a path");
   if (p.assign)
     for (const pieces& v : p.parts)
-      if (v.size() != 1 || v[0].kind != piece_kind::token || !v[0].tok->is_identifier())
-        error(*p.tok, "the vertices of '@&(a, b)' must be variables: the path assigns its final pair to them");
+      if (!v.empty() && (v.size() != 1 || v[0].kind != piece_kind::token || !v[0].tok->is_identifier()))
+        error(v[0].tok ? *v[0].tok : *p.tok,
+              "the vertices of '@&(a, b)' must be variables: the path assigns its final pair to them");
   while (true) {
     const token& t = peek();
     if (t.kind == tok::at) {
@@ -302,18 +303,102 @@ piece parser::parse_path() {
   return p;
 }
 
-// edge-access = "(" ["`"] operand ("^" | "|") operand ")"
-bool parser::parse_edge_access(piece& out) {
-  out = piece();
-  out.kind = piece_kind::edge_access;
-  take();  // (
-  out.parts.push_back(parse_operand("before '^' or '|'"));
-  if (!at("^") && !at("|")) return false;
-  out.tok = take();
-  out.parts.push_back(parse_operand("after '" + std::string(out.tok->text) + "'"));
-  if (!at(")")) return false;
-  out.close = take();
+namespace {
+
+bool is_prefix_operator(const piece& p) {
+  return p.kind == piece_kind::token && p.tok->kind == tok::punct &&
+         (p.tok->text == "!" || p.tok->text == "~" || p.tok->text == "-" || p.tok->text == "+" ||
+          p.tok->text == "*" || p.tok->text == "&" || p.tok->text == "++" || p.tok->text == "--");
+}
+
+// Pieces [b, e) form one operand: prefix operators, a primary, postfixes.
+bool is_operand_shape(const pieces& run, std::size_t b, std::size_t e) {
+  std::size_t i = b;
+  while (i < e && is_prefix_operator(run[i])) ++i;
+  if (i == e) return false;
+  const piece& first = run[i];
+  if (first.kind == piece_kind::token) {
+    const token& t = *first.tok;
+    if (t.is("::") && i + 1 < e && run[i + 1].kind == piece_kind::token && run[i + 1].tok->is_identifier()) ++i;
+    else if (!(t.kind == tok::number || t.kind == tok::string || t.kind == tok::character ||
+               (t.is_identifier() && !is_expression_keyword(t.text) && !is_reserved_vv_word(t.text))))
+      return false;
+  } else if (first.kind == piece_kind::group) {
+    if (!first.tok->is("(")) return false;
+  } else if (first.kind == piece_kind::property || first.kind == piece_kind::body ||
+             first.kind == piece_kind::class_body) {
+    return false;
+  }
+  for (++i; i < e; ++i) {
+    const piece& q = run[i];
+    if (q.kind == piece_kind::property) continue;
+    if (q.kind == piece_kind::group && (q.tok->is("(") || q.tok->is("["))) continue;
+    if (q.kind != piece_kind::token) return false;
+    const token& t = *q.tok;
+    if (t.is("++") || t.is("--")) continue;
+    if ((t.is(".") || t.is("->") || t.is("::")) && i + 1 < e && run[i + 1].kind == piece_kind::token &&
+        run[i + 1].tok->is_identifier()) {
+      ++i;
+      continue;
+    }
+    return false;
+  }
   return true;
+}
+
+}  // namespace
+
+// edge-access = "(" operand ("^" | "|") operand ")"
+void parser::as_edge_access(piece& g) {
+  const pieces& in = g.parts[0];
+  std::size_t op = in.size();
+  for (std::size_t i = 0; i < in.size(); ++i)
+    if (is_token(in[i], "^") || is_token(in[i], "|")) {
+      if (op != in.size()) return;  // two operators: plain C++
+      op = i;
+    }
+  if (op == in.size() || !is_operand_shape(in, 0, op) || !is_operand_shape(in, op + 1, in.size())) return;
+  piece e;
+  e.kind = piece_kind::edge_access;
+  e.tok = in[op].tok;
+  e.close = g.close;
+  pieces x, y;
+  for (std::size_t i = 0; i < op; ++i) x.push_back(std::move(g.parts[0][i]));
+  for (std::size_t i = op + 1; i < in.size(); ++i) y.push_back(std::move(g.parts[0][i]));
+  e.parts.push_back(std::move(x));
+  e.parts.push_back(std::move(y));
+  g = std::move(e);
+}
+
+std::size_t parser::scan_operand(std::size_t i) const {
+  auto skip_group = [&](std::size_t k) -> std::size_t {  // k at an opener
+    int depth = 0;
+    for (; k < toks_.size(); ++k) {
+      const token& t = toks_[k];
+      if (t.is("(") || t.is("[") || t.is("{")) ++depth;
+      else if ((t.is(")") || t.is("]") || t.is("}")) && --depth == 0) return k + 1;
+      else if (t.kind == tok::eof) break;
+    }
+    return std::string::npos;
+  };
+  const std::size_t npos = std::string::npos;
+  auto at = [&](std::size_t k) -> const token& { return k < toks_.size() ? toks_[k] : toks_.back(); };
+  while (at(i).is("!") || at(i).is("~") || at(i).is("-") || at(i).is("+") || at(i).is("*") || at(i).is("&"))
+    ++i;
+  while (at(i).kind == tok::backtick) ++i;
+  const token& t = at(i);
+  if (t.is("(")) i = skip_group(i);
+  else if (t.is_identifier() || t.kind == tok::number || t.kind == tok::character) ++i;
+  else if (t.kind == tok::string) while (at(i).kind == tok::string) ++i;
+  else return npos;
+  while (i != npos) {
+    const token& u = at(i);
+    if (u.is("(") || u.is("[")) i = skip_group(i);
+    else if ((u.is(".") || u.is("->") || u.is("::") || u.kind == tok::dollar) && at(i + 1).is_identifier()) i += 2;
+    else if (u.is("++") || u.is("--")) ++i;
+    else break;
+  }
+  return i;
 }
 
 }  // namespace vvc

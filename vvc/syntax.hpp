@@ -104,8 +104,10 @@ enum class edit_kind {
 //! One declarator of `vertex a, b(x, y), c = d;`.
 struct vertex_declarator {
   const token* name = nullptr;
-  enum { create, create_with, reference } how = create;
-  std::vector<pieces> args;  // create_with: one per initial value; reference: [0] = initializer
+  enum { create, create_with, reference, plain } how = create;
+  //! create_with: one per initial value; reference: [0] = initializer;
+  //! plain (an array of handles): [0] = what follows the name, as it is.
+  std::vector<pieces> args;
 };
 
 struct stmt {

@@ -1,0 +1,177 @@
+// What the parser decides, seen through the C++ it produces: operand
+// extents and precedence, vv-or-C++ decisions, pass-through, and that
+// several independent errors are all reported. (Whether the translations
+// behave as LANGUAGE.md says is checked by the programs in programs/.)
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cctype>
+#include <string>
+
+#include "translate.hpp"
+
+namespace {
+
+std::string squeeze(std::string s) {
+  s.erase(std::remove_if(s.begin(), s.end(), [](unsigned char c) { return std::isspace(c); }), s.end());
+  return s;
+}
+
+// The C++ of `code` placed in a function body.
+std::string in_function(const std::string& code) {
+  vvc::translation t = vvc::translate_text("t.vvp", "void f() {\n" + code + "\n}\n");
+  std::string errors;
+  for (const auto& d : t.diag.list()) errors += vvc::format(d);
+  EXPECT_TRUE(t.ok) << errors;
+  return squeeze(t.cpp);
+}
+
+void expect_translation(const std::string& vv, const std::string& cxx) {
+  std::string out = in_function(vv);
+  EXPECT_NE(out.find(squeeze(cxx)), std::string::npos) << vv << "\n  became\n" << out;
+}
+
+// A failed translation (its diagnostics point into its own sources).
+vvc::translation failed(const std::string& program) {
+  vvc::translation t = vvc::translate_text("t.vvp", program);
+  EXPECT_FALSE(t.ok);
+  EXPECT_TRUE(t.cpp.empty());
+  return t;
+}
+
+}  // namespace
+
+TEST(Translation, QueryOperandsAreUnaryExpressions) {
+  expect_translation("x = a + nextto b in c$x;", "x = a + vv::next_to(b, c.props().x);");
+  expect_translation("n = valence `v + 1;", "n = vv::valence(vv::old(v)) + 1;");
+  expect_translation("p = (nextto u in `v)$pos * 0.125;",
+                     "p = (vv::next_to(u, vv::old(v))).props().pos * 0.125;");
+  expect_translation("y = nextto _nextto(a) in f(a, b, prevto b in c);",
+                     "y = vv::next_to(_nextto(a), f(a, b, vv::prev_to(b, c)));");
+  expect_translation("y = nextto (nextto _nextto(a) in f(a, b, prevto b in c)) in a;",
+                     "y = vv::next_to((vv::next_to(_nextto(a), f(a, b, vv::prev_to(b, c)))), a);");
+  expect_translation("z = nextto nextto a in b in c;", "z = vv::next_to(vv::next_to(a, b), c);");
+}
+
+TEST(Translation, TheOldStateTakesAPostfixExpressionAndBindsBeforeDollar) {
+  expect_translation("p = `v$pos;", "p = vv::old(v).props().pos;");
+  expect_translation("x = `q[8]$x;", "x = vv::old(q[8]).props().x;");
+  expect_translation("x = `f(a)$x;", "x = vv::old(f(a)).props().x;");
+  expect_translation("x = f(a)$x;", "x = f(a).props().x;");
+  expect_translation("x = `s.v->w$x;", "x = vv::old(s.v->w).props().x;");
+  expect_translation("x = \xE2\x80\x98v$x;", "x = vv::old(v).props().x;");
+}
+
+TEST(Translation, IndexedNextAndPrevAreVvOnlyBeforeTo) {
+  expect_translation("w = next(2)to u in `v;", "w = vv::next_to(u, vv::old(v), (2));");
+  expect_translation("w = prev(i + 1)to u in v;", "w = vv::prev_to(u, v, (i + 1));");
+  expect_translation("auto it = std::next(i); auto j = next(i);", "auto it = std::next(i); auto j = next(i);");
+}
+
+TEST(Translation, ContextWordsStayIdentifiersElsewhere) {
+  expect_translation("int any = 1, is = 2, in = 3, to = 4; any = is + in * to;",
+                     "int any = 1, is = 2, in = 3, to = 4; any = is + in * to;");
+  expect_translation("bool b = is x in M;", "bool b = vv::is_in(x, M);");
+  expect_translation("v = any in w; f = flagged in w;", "v = vv::any_in(w); f = vv::flagged_in(w);");
+  expect_translation("int nexttoX = 1, vertexCount = 2; bool in_range;",
+                     "int nexttoX = 1, vertexCount = 2; bool in_range;");
+}
+
+TEST(Translation, EdgeAccessOnlyInParenthesesThatAreNoCall) {
+  expect_translation("(a^b).mark = 3;", "(vv::edge_hat(a, b)).mark = 3;");
+  expect_translation("k = (i|j) + (i^j);", "k = (vv::edge_bar(i, j)) + (vv::edge_hat(i, j));");
+  expect_translation("c = ((`v)|u).crease;", "c = (vv::edge_bar((vv::old(v)), u)).crease;");
+  expect_translation("g(a^b); h = i | j; k = (i | j | l);", "g(a^b); h = i | j; k = (i | j | l);");
+}
+
+TEST(Translation, Paths) {
+  expect_translation("w = @(a, b) swap next @;", "w = vv::path(a, b).swap().next().second();");
+  expect_translation("w = `@(a, b) next, prev @;", "w = vv::old_path(a, b).next().prev().second();");
+  expect_translation("@&(a, b) swap next @;", "vv::path_into(a, b).swap().next().store();");
+  expect_translation("`@&(a, b) swap next @;", "vv::old_path_into(a, b).swap().next().store();");
+}
+
+TEST(Translation, EditsAndTheirCxxLookalikes) {
+  expect_translation("make {a, b, c} nb_of v;", "vv::make_nb(v, {a, b, c});");
+  expect_translation("erase x from v;", "vv::erase_from(x, v);");
+  expect_translation("erase flag from v;", "vv::erase_flag(v);");
+  expect_translation("replace a with x in `v;", "vv::replace_in(a, x, vv::old(v));");
+  expect_translation("splice x before flag in v;", "vv::splice_before_flag(x, v);");
+  expect_translation("add (x) to M; remove x from M;", "vv::add_to((x), M); vv::remove_from(x, M);");
+  expect_translation("synchronize M; clear M;", "vv::synchronise(M); vv::clear(M);");
+  // Calls of C++ functions that share an edit's name stay calls.
+  expect_translation("erase(it); remove(\"file\"); add(1, 2); merge = 3;",
+                     "erase(it); remove(\"file\"); add(1, 2); merge = 3;");
+}
+
+TEST(Translation, VertexDeclarations) {
+  expect_translation("vertex a, b(p, 2.0), c = a, d = 0;",
+                     "vertex a = vv_new_vertex(); vertex b = vv_new_vertex_with(p, 2.0); "
+                     "vertex c = a; vertex d = 0;");
+  expect_translation("vertex& r = a; vertex* q = &a;", "vertex& r = a; vertex* q = &a;");
+}
+
+TEST(Translation, ForallOverAnyOperand) {
+  expect_translation("forall x in nextto a in b { f(x); }",
+                     "for (vertex x : vv::each(vv::next_to(a, b))) { f(x); }");
+  expect_translation("forall x in `v n++;", "for (vertex x : vv::each(vv::old(v))) n++;");
+}
+
+TEST(Translation, CommentsAndStringsAreNotTranslated) {
+  expect_translation("s = \"nextto a in b\"; // make {a} nb_of b;", "s = \"nextto a in b\";");
+  std::string out = in_function("s = \"nextto a in b\"; // make {a} nb_of b;");
+  EXPECT_EQ(out.find("make_nb"), std::string::npos);
+}
+
+TEST(Translation, VvInsideLambdasTernariesAndTemplateArguments) {
+  expect_translation("auto g = [&](vertex v) { add v to M; return nextto v in w; };",
+                     "auto g = [&](vertex v) { vv::add_to(v, M); return vv::next_to(v, w); };");
+  expect_translation("u = c ? nextto a in b : prevto a in b;", "u = c ? vv::next_to(a, b) : vv::prev_to(a, b);");
+  expect_translation("std::vector<decltype(nextto a in b)> vs;", "std::vector<decltype(vv::next_to(a, b))> vs;");
+}
+
+TEST(Translation, ExecutionBlocksOnlyAtTopLevelBeforeBrace) {
+  vvc::translation t = vvc::translate_text("t.vvp", "int step = 0;\nvoid f() { step++; }\nstep {\n f();\n}\n");
+  ASSERT_TRUE(t.ok);
+  std::string out = squeeze(t.cpp);
+  EXPECT_NE(out.find("intstep=0;"), std::string::npos);
+  EXPECT_NE(out.find("staticvoidvv_block_step(){f();}"), std::string::npos);
+  EXPECT_NE(out.find("returnvv::plugin::guarded(vv_exchange,vv_block_step);"), std::string::npos);
+}
+
+TEST(Translation, LineDirectivesFollowTheSource) {
+  vvc::translation t = vvc::translate_text("dir/m.vvp", "int a;\n\n\n\n\n\n\n\n\n\n\n\nint b;\n");
+  ASSERT_TRUE(t.ok);
+  EXPECT_NE(t.cpp.find("#line 1 \"dir/m.vvp\"\nint a;"), std::string::npos) << t.cpp;
+  EXPECT_NE(t.cpp.find("#line 13 \"dir/m.vvp\"\nint b;"), std::string::npos) << t.cpp;
+}
+
+TEST(Translation, GlobalMeshesAreListedForTheHost) {
+  vvc::translation t = vvc::translate_text("t.vvp", "mesh S, T;\nstatic mesh U;\nmesh f();\n");
+  ASSERT_TRUE(t.ok);
+  EXPECT_NE(t.cpp.find("{\"S\","), std::string::npos);
+  EXPECT_NE(t.cpp.find("{\"T\","), std::string::npos);
+  EXPECT_NE(t.cpp.find("{\"U\","), std::string::npos);
+  EXPECT_EQ(t.cpp.find("{\"f\","), std::string::npos);
+  EXPECT_NE(t.cpp.find("*count = 3;"), std::string::npos);
+}
+
+TEST(Diagnostics, IndependentErrorsAreAllReported) {
+  vvc::translation t =
+      failed("void f() {\n  x = nextto a b;\n}\nvoid g() {\n  erase x v;\n}\nstart {\n  y = valence ;\n}\n");
+  const auto& errors = t.diag.list();
+  ASSERT_EQ(errors.size(), 3u);
+  EXPECT_EQ(errors[0].line, 2);
+  EXPECT_EQ(errors[1].line, 5);
+  EXPECT_EQ(errors[2].line, 8);
+}
+
+TEST(Diagnostics, FormatHasFileLineColumnSourceLineAndCaret) {
+  vvc::translation t = failed("void f() {\n\tx = nextto a b;\n}\n");
+  const auto& errors = t.diag.list();
+  ASSERT_FALSE(errors.empty());
+  EXPECT_EQ(vvc::format(errors[0]),
+            "t.vvp:2:15: error: expected 'in' after the operand of 'nextto', found 'b'\n"
+            "  \tx = nextto a b;\n"
+            "  \t             ^\n");
+}
