@@ -200,7 +200,9 @@ void parser::analyse_fields(property_block& b) {
         if (q.kind == piece_kind::token && q.tok->is_identifier()) name = k;
       }
       if (name == de) {
-        error(*m[ds].tok, "expected a property name in this declaration");
+        // An empty declarator (`int a, ;`) has no token of its own.
+        const token& where = ds < de ? *m[ds].tok : ds > 0 ? *m[ds - 1].tok : *b.open;
+        error(where, "expected a property name in this declaration");
         continue;
       }
       bool pointer = false;

@@ -175,3 +175,11 @@ TEST(Diagnostics, FormatHasFileLineColumnSourceLineAndCaret) {
             "  \tx = nextto a b;\n"
             "  \t             ^\n");
 }
+
+TEST(Diagnostics, EmptyDeclaratorInAPropertyBlockIsReported) {
+  // Found by the fuzzer: the empty declarator has no token of its own.
+  vvc::translation t = failed("vertex {\n  int a, ;\n};\n");
+  ASSERT_FALSE(t.diag.list().empty());
+  EXPECT_EQ(t.diag.list()[0].message, "expected a property name in this declaration");
+  EXPECT_EQ(t.diag.list()[0].line, 2);
+}
