@@ -24,11 +24,17 @@ bool ident_char(char c) { return std::isalnum(static_cast<unsigned char>(c)) || 
 // U+2018 LEFT SINGLE QUOTATION MARK, the typographic backtick.
 constexpr std::string_view left_quote = "\xE2\x80\x98";
 
+// What the lexers of a file and the files it includes share.
+struct include_state {
+  std::vector<const source_file*> stack;  // files being read, outermost first
+  std::vector<std::string> once;          // files that said #pragma once
+};
+
 class lexer {
  public:
-  lexer(const source_file& f, source_set& sources, diagnostics& diag,
-        std::vector<const source_file*>& stack, std::vector<token>& out)
-      : f_(f), s_(f.text), sources_(sources), diag_(diag), stack_(stack), out_(out) {}
+  lexer(const source_file& f, source_set& sources, diagnostics& diag, include_state& state,
+        std::vector<token>& out)
+      : f_(f), s_(f.text), sources_(sources), diag_(diag), state_(state), out_(out) {}
 
   void run() {
     bool space = false;
@@ -140,7 +146,19 @@ class lexer {
     if (vvp_include(t.text, included)) {
       include(t, included);
       t.text = std::string_view();  // nothing of the directive itself remains
+    } else if (is_pragma_once(t.text)) {
+      // Included .vvp files are pasted into one translation unit, where the
+      // pragma would mean nothing: the lexer keeps the promise instead.
+      state_.once.push_back(f_.path);
+      t.text = std::string_view();
     }
+  }
+
+  static bool is_pragma_once(std::string_view line) {
+    std::string words;
+    for (char c : line.substr(1))
+      if (c != ' ' && c != '\t') words += c;
+    return words == "pragmaonce";
   }
 
   static bool vvp_include(std::string_view line, std::string& path) {
@@ -161,7 +179,9 @@ class lexer {
 
   void include(const token& at, const std::string& name) {
     std::string path = name[0] == '/' ? name : f_.folder() + name;
-    for (const source_file* open : stack_)
+    for (const std::string& done : state_.once)
+      if (done == path) return;
+    for (const source_file* open : state_.stack)
       if (open->path == path) {
         diag_.error(at, "'" + name + "' includes itself (through #include)");
         return;
@@ -172,9 +192,9 @@ class lexer {
       diag_.error(at, "cannot open included file '" + name + "': " + why);
       return;
     }
-    stack_.push_back(inc);
-    lexer(*inc, sources_, diag_, stack_, out_).run();
-    stack_.pop_back();
+    state_.stack.push_back(inc);
+    lexer(*inc, sources_, diag_, state_, out_).run();
+    state_.stack.pop_back();
   }
 
   bool scan(token& t) {
@@ -310,7 +330,7 @@ class lexer {
   const std::string& s_;
   source_set& sources_;
   diagnostics& diag_;
-  std::vector<const source_file*>& stack_;
+  include_state& state_;
   std::vector<token>& out_;
   std::size_t pos_ = 0;
   std::size_t line_begin_ = 0;
@@ -324,8 +344,9 @@ class lexer {
 
 std::vector<token> lex(const source_file& file, source_set& sources, diagnostics& diag) {
   std::vector<token> out;
-  std::vector<const source_file*> stack{&file};
-  lexer(file, sources, diag, stack, out).run();
+  include_state state;
+  state.stack.push_back(&file);
+  lexer(file, sources, diag, state, out).run();
   token eof;
   eof.kind = tok::eof;
   eof.file = &file;

@@ -85,7 +85,7 @@ class parser {
   static void as_edge_access(piece& group);
   //! The index just after the operand starting at token i (npos if none),
   //! found by scanning tokens: decides `is X in V` without backtracking.
-  std::size_t scan_operand(std::size_t i) const;
+  std::size_t scan_operand(std::size_t i, int depth = 0) const;
 
   // ---- statements (parser_statements.cpp) ----
   stmt_ptr parse_statement();

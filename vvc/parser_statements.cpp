@@ -172,12 +172,15 @@ bool parser::edit_follows() const {
   if (next.is_word(continuation_of(w)) || (w == "splice" && (next.is_word("after") || next.is_word("before"))))
     return true;
   if (next.is("(")) {
-    if (w == "splice") return false;
     int depth = 0;
     for (std::size_t k = pos_ + 1; k < toks_.size(); ++k) {
       if (toks_[k].is("(")) ++depth;
-      if (toks_[k].is(")") && --depth == 0)
-        return k + 1 < toks_.size() && toks_[k + 1].is(continuation_of(w));
+      if (toks_[k].is(")") && --depth == 0) {
+        if (k + 1 >= toks_.size()) return false;
+        const token& after = toks_[k + 1];
+        return w == "splice" ? after.is_word("after") || after.is_word("before")
+                             : after.is(continuation_of(w));
+      }
       if (toks_[k].kind == tok::eof) return false;
     }
     return false;

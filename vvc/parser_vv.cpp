@@ -370,27 +370,70 @@ void parser::as_edge_access(piece& g) {
   g = std::move(e);
 }
 
-std::size_t parser::scan_operand(std::size_t i) const {
+// The same grammar as parse_operand, read over tokens without building
+// anything (so `is` can look ahead for its `in`).
+std::size_t parser::scan_operand(std::size_t i, int depth) const {
+  const std::size_t npos = std::string::npos;
+  if (depth > max_nesting) return npos;
+  auto at = [&](std::size_t k) -> const token& { return k < toks_.size() ? toks_[k] : toks_.back(); };
   auto skip_group = [&](std::size_t k) -> std::size_t {  // k at an opener
-    int depth = 0;
+    int level = 0;
     for (; k < toks_.size(); ++k) {
       const token& t = toks_[k];
-      if (t.is("(") || t.is("[") || t.is("{")) ++depth;
-      else if ((t.is(")") || t.is("]") || t.is("}")) && --depth == 0) return k + 1;
+      if (t.is("(") || t.is("[") || t.is("{")) ++level;
+      else if ((t.is(")") || t.is("]") || t.is("}")) && --level == 0) return k + 1;
       else if (t.kind == tok::eof) break;
     }
-    return std::string::npos;
+    return npos;
   };
-  const std::size_t npos = std::string::npos;
-  auto at = [&](std::size_t k) -> const token& { return k < toks_.size() ? toks_[k] : toks_.back(); };
-  while (at(i).is("!") || at(i).is("~") || at(i).is("-") || at(i).is("+") || at(i).is("*") || at(i).is("&"))
+  // operand "in" operand, from k
+  auto operand_in_operand = [&](std::size_t k) -> std::size_t {
+    k = scan_operand(k, depth + 1);
+    if (k == npos || !at(k).is_word("in")) return npos;
+    return scan_operand(k + 1, depth + 1);
+  };
+  while (at(i).is("!") || at(i).is("~") || at(i).is("-") || at(i).is("+") || at(i).is("*") ||
+         at(i).is("&") || at(i).is("++") || at(i).is("--"))
     ++i;
-  while (at(i).kind == tok::backtick) ++i;
+  bool old = false;
+  while (at(i).kind == tok::backtick) ++i, old = true;
   const token& t = at(i);
-  if (t.is("(")) i = skip_group(i);
-  else if (t.is_identifier() || t.kind == tok::number || t.kind == tok::character) ++i;
-  else if (t.kind == tok::string) while (at(i).kind == tok::string) ++i;
-  else return npos;
+  if (t.kind == tok::at) {  // a path: @ [&] ( ... ) ops @
+    std::size_t k = i + 1;
+    if (at(k).is("&")) ++k;
+    if (!at(k).is("(")) return npos;
+    k = skip_group(k);
+    while (k != npos && k < toks_.size() && at(k).kind != tok::at) {
+      if (at(k).is(";") || at(k).kind == tok::eof) return npos;
+      ++k;
+    }
+    i = k == npos ? npos : k + 1;
+  } else if (t.is_identifier() && !old) {
+    std::string_view w = t.text;
+    if (w == "nextto" || w == "prevto") {
+      if (at(i + 1).is_word("flag") && at(i + 2).is_word("in")) return scan_operand(i + 3, depth + 1);
+      return operand_in_operand(i + 1);
+    }
+    if ((w == "next" || w == "prev") && at(i + 1).is("(")) {
+      std::size_t k = skip_group(i + 1);
+      if (k != npos && at(k).is_word("to")) return operand_in_operand(k + 1);
+    }
+    if ((w == "any" || w == "flagged") && at(i + 1).is_word("in")) return scan_operand(i + 2, depth + 1);
+    if (w == "valence" || w == "labelof") return scan_operand(i + 1, depth + 1);
+    if (w == "is") {
+      std::size_t k = operand_in_operand(i + 1);
+      if (k != npos) return k;
+    }
+    ++i;
+  } else if (t.is("(")) {
+    i = skip_group(i);
+  } else if (t.is_identifier() || t.kind == tok::number || t.kind == tok::character || t.is("::")) {
+    ++i;
+  } else if (t.kind == tok::string) {
+    while (at(i).kind == tok::string) ++i;
+  } else {
+    return npos;
+  }
   while (i != npos) {
     const token& u = at(i);
     if (u.is("(") || u.is("[")) i = skip_group(i);

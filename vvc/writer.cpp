@@ -76,6 +76,12 @@ void writer::lines(std::string_view s) {
   file_ = nullptr;
 }
 
+void writer::generated(std::string_view s) {
+  std::string text = "#line 1 \"<vvc generated>\"\n";
+  text += s;
+  lines(text);
+}
+
 void writer::preproc(const vvc::token& t) {
   sync(t);
   if (!out_.empty() && out_.back() != '\n') {

@@ -22,6 +22,9 @@ class writer {
   void at(const vvc::token& t);
   //! Generated lines of their own: the next token re-synchronises.
   void lines(std::string_view s);
+  //! Generated code whose compiler messages should not name a .vvp line:
+  //! it is marked as a file of its own, "<vvc generated>".
+  void generated(std::string_view s);
   //! A preprocessor line, alone on its line.
   void preproc(const vvc::token& t);
 

@@ -72,6 +72,9 @@ TEST(Translation, ContextWordsStayIdentifiersElsewhere) {
   expect_translation("int any = 1, is = 2, in = 3, to = 4; any = is + in * to;",
                      "int any = 1, is = 2, in = 3, to = 4; any = is + in * to;");
   expect_translation("bool b = is x in M;", "bool b = vv::is_in(x, M);");
+  expect_translation("b = is nextto a in v in w;", "b = vv::is_in(vv::next_to(a, v), w);");
+  expect_translation("b = is @(a, b) next @ in c;", "b = vv::is_in(vv::path(a, b).next().second(), c);");
+  expect_translation("b = is prev(2)to a in `v in c;", "b = vv::is_in(vv::prev_to(a, vv::old(v), (2)), c);");
   expect_translation("v = any in w; f = flagged in w;", "v = vv::any_in(w); f = vv::flagged_in(w);");
   expect_translation("int nexttoX = 1, vertexCount = 2; bool in_range;",
                      "int nexttoX = 1, vertexCount = 2; bool in_range;");
@@ -98,6 +101,7 @@ TEST(Translation, EditsAndTheirCxxLookalikes) {
   expect_translation("replace a with x in `v;", "vv::replace_in(a, x, vv::old(v));");
   expect_translation("splice x before flag in v;", "vv::splice_before_flag(x, v);");
   expect_translation("add (x) to M; remove x from M;", "vv::add_to((x), M); vv::remove_from(x, M);");
+  expect_translation("splice (x) after a in v;", "vv::splice_after((x), a, v);");
   expect_translation("synchronize M; clear M;", "vv::synchronise(M); vv::clear(M);");
   // Calls of C++ functions that share an edit's name stay calls.
   expect_translation("erase(it); remove(\"file\"); add(1, 2); merge = 3;",
@@ -153,7 +157,7 @@ TEST(Translation, GlobalMeshesAreListedForTheHost) {
   EXPECT_NE(t.cpp.find("{\"T\","), std::string::npos);
   EXPECT_NE(t.cpp.find("{\"U\","), std::string::npos);
   EXPECT_EQ(t.cpp.find("{\"f\","), std::string::npos);
-  EXPECT_NE(t.cpp.find("*count = 3;"), std::string::npos);
+  EXPECT_NE(t.cpp.find("*vv_count = 3;"), std::string::npos);
 }
 
 TEST(Diagnostics, IndependentErrorsAreAllReported) {

@@ -99,6 +99,14 @@ inline void check_structure(const pugi::xml_document& doc, const io::text_file& 
   }
 }
 
+// The text of each field, in order, as the file holds it.
+template <class P>
+std::vector<std::string> field_texts(const P& props) {
+  std::vector<std::string> out;
+  for_each_field(props, [&](const char*, const auto& value) { out.push_back(value_to_text(value)); });
+  return out;
+}
+
 // Parses an unsigned vertex index of the file; fails on anything else.
 inline std::uint32_t parse_index(const std::string& token, std::size_t count,
                                  const std::function<void(const std::string&)>& fail) {
@@ -267,17 +275,21 @@ std::string vvm_text(const mesh<Tr>& m) {
   }
 
   using entry_traits = typename context<Tr>::entry_traits;
-  const EP blank{};
+  // Records are compared by what the file would hold for them, so a record
+  // type needs no == of its own, and fields not written do not count.
+  const std::vector<std::string> blank = detail::field_texts(EP{});
   for (std::uint32_t a : members) {
     for (auto& e : ctx->nb(a)) {
       std::uint32_t b = detail::entry_id(e);
       if (pos[b] == none) continue;
       const EP& rec = entry_traits::rec(e, ctx->empty_record());
-      if (rec == blank) continue;
+      std::vector<std::string> texts = detail::field_texts(rec);
+      if (texts == blank) continue;
       // A pair with equal records both ways is written once, as symmetric.
       std::int32_t back = detail::find(ctx->nb(b), a);
       bool same_back = back >= 0 &&
-          entry_traits::rec(ctx->nb(b)[static_cast<std::uint32_t>(back)], ctx->empty_record()) == rec;
+          detail::field_texts(entry_traits::rec(ctx->nb(b)[static_cast<std::uint32_t>(back)],
+                                                ctx->empty_record())) == texts;
       if (same_back && pos[b] < pos[a]) continue;
       pugi::xml_node x = root.append_child("e");
       x.append_attribute("symmetric") = same_back ? "1" : "0";
