@@ -57,10 +57,15 @@ void parser::parse_property_block(program& p) {
       error(*b.keyword, std::string("the ") + property_name(k) + " block must come before the " +
                             property_name(j) + " block (property blocks go edge, vertex, mesh)");
   }
-  if (first_use_[k])
+  // All blocks come before any other use of any of the three words: the
+  // model's types are complete only after the last block.
+  const token* used = first_use_[k];
+  for (const token* u : first_use_)
+    if (u && !used) used = u;
+  if (used)
     error(*b.keyword, std::string("the ") + property_name(k) +
-                          " block must come before any other use of '" + property_name(k) +
-                          "' (used at line " + std::to_string(first_use_[k]->line) + ")");
+                          " block must come before any other use of '" + std::string(used->text) +
+                          "' (used at line " + std::to_string(used->line) + ")");
   b.open = take();
   b.members = parse_run({}, mode::declaration);
   if (at("}")) {
