@@ -38,6 +38,12 @@ const source_file* source_set::load(const std::string& path, std::string* why) {
   return add(path, ss.str());
 }
 
+std::vector<std::string> source_set::paths() const {
+  std::vector<std::string> out;
+  for (const auto& f : files_) out.push_back(f->path);
+  return out;
+}
+
 const source_file* source_set::add(std::string path, std::string text) {
   files_.push_back(std::make_unique<source_file>(std::move(path), std::move(text)));
   return files_.back().get();

@@ -27,6 +27,8 @@ class source_set {
   const source_file* load(const std::string& path, std::string* why);
   //! Adds text under a name (tests, fuzzing, standard input).
   const source_file* add(std::string path, std::string text);
+  //! The paths of every file read, in order.
+  std::vector<std::string> paths() const;
 
  private:
   std::vector<std::unique_ptr<source_file>> files_;

@@ -9,6 +9,7 @@
 //   const char* vv_plugin_start(void);   ... _step, _end, _close,
 //                 _render_init, _render, _render_screen
 //                                         // NULL, or the error (file:line: ...)
+//   const char* vv_plugin_reread(void);             // the proxy's file objects
 //   int vv_plugin_has_block(const char* name);  // "start", "step", ...
 //   vv::proxy* vv_plugin_proxy(void);
 //   const vv_mesh_entry* vv_plugin_meshes(size_t* count);  // global meshes, in order
@@ -69,6 +70,8 @@ const char* vv_plugin_close(void);
 const char* vv_plugin_render_init(void);
 const char* vv_plugin_render(void);
 const char* vv_plugin_render_screen(void);
+//! Re-reads the file-backed objects in the proxy's lists.
+const char* vv_plugin_reread(void);
 int vv_plugin_has_block(const char* name);
 vv::proxy* vv_plugin_proxy(void);
 const vv_mesh_entry* vv_plugin_meshes(std::size_t* count);

@@ -2,7 +2,18 @@
 // program writes and the host reads.
 #pragma once
 
+#include <vector>
+
 namespace vv {
+
+//! An object whose contents come from a file (a colour palette, a material
+//! list, a function graph): the host's "reread files" command calls
+//! reread() on every one the program put into the proxy's lists.
+class file_object {
+ public:
+  virtual ~file_object() = default;
+  virtual void reread() = 0;
+};
 
 struct proxy {
   unsigned steps = 0;         //!< steps the host's "run" command performs
@@ -15,6 +26,14 @@ struct proxy {
   bool has_view_volume = false;
   double view_min[3] = {0, 0, 0};
   double view_max[3] = {0, 0, 0};
+
+  //! File-backed objects, by kind, re-read on the host's command.
+  std::vector<file_object*> materials, palettes, functions, contours;
+
+  void reread_files() {
+    for (auto* list : {&materials, &palettes, &functions, &contours})
+      for (file_object* f : *list) f->reread();
+  }
 
   void setViewVolume(double maxx, double maxy, double maxz, double minx, double miny,
                      double minz) noexcept {

@@ -14,7 +14,7 @@
 #include "edits.hpp"
 #include "error.hpp"
 #include "invariants.hpp"
-#include "io/mesh_io.hpp"
+#include "io/vvm.hpp"
 #include "iteration.hpp"
 #include "mesh.hpp"
 #include "orbits.hpp"

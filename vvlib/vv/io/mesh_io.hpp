@@ -73,33 +73,45 @@ void read_mesh(mesh<Tr>& m, const std::string& path) {
   build_from_faces(m, points, faces, path);
 }
 
+//! Writes a polygon file (.obj .off .ply .stl by extension), atomically:
+//! points and faces as indices into them (STL gets fans of triangles).
+inline void write_polygon_file(const std::string& path,
+                               const std::vector<std::array<double, 3>>& points,
+                               std::vector<std::vector<std::size_t>> faces) {
+  std::string ext = io::extension_of(path);
+  if (!detail::is_polygon_format(ext)) detail::unknown_format(path);
+  std::vector<detail::soup_point> soup;
+  soup.reserve(points.size());
+  for (const auto& p : points) soup.emplace_back(p[0], p[1], p[2]);
+  if (ext == ".stl") faces = detail::fan_triangles(faces);  // STL holds triangles only
+  std::string tmp = io::temporary_beside(path);
+  // 17 significant digits: every double reads back exactly.
+  if (!CGAL::IO::write_polygon_soup(tmp, soup, faces, CGAL::parameters::stream_precision(17))) {
+    std::remove(tmp.c_str());
+    throw error(path, 0, "cannot write file");
+  }
+  io::commit_file(tmp, path);
+}
+
 //! Writes m to a file, atomically; nothing is written on failure.
 template <class Tr>
 void write_mesh(const mesh<Tr>& m, const std::string& path, const export_options& opt = {}) {
   std::string ext = io::extension_of(path);
   if (ext == ".vvm") return write_vvm(m, path);
   if (!detail::is_polygon_format(ext)) detail::unknown_format(path);
-  std::vector<detail::soup_point> points;
+  std::vector<std::array<double, 3>> points;
   points.reserve(m.size());
   for (std::uint32_t id : m.slots()) {
     if (!id) continue;
     std::array<double, 3> p{0, 0, 0};
     if constexpr (detail::has_pos<typename Tr::vertex_props>::value)
       p = detail::xyz_of(m.ctx()->props(id).pos);
-    points.emplace_back(p[0], p[1], p[2]);
+    points.push_back(p);
   }
   std::vector<std::vector<std::size_t>> faces;
   for (const auto& orbit : orbits(m, opt.max_face).faces)
     if (orbit.size() >= 3) faces.emplace_back(orbit.begin(), orbit.end());
-  if (ext == ".stl") faces = detail::fan_triangles(faces);  // STL holds triangles only
-
-  std::string tmp = io::temporary_beside(path);
-  // 17 significant digits: every double reads back exactly.
-  if (!CGAL::IO::write_polygon_soup(tmp, points, faces, CGAL::parameters::stream_precision(17))) {
-    std::remove(tmp.c_str());
-    throw error(path, 0, "cannot write file");
-  }
-  io::commit_file(tmp, path);
+  write_polygon_file(path, points, std::move(faces));
 }
 
 }  // namespace vv

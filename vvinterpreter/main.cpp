@@ -1,0 +1,22 @@
+// vvinterpreter: build, load and run vv models — in a window, or headless
+// for regression tests (see docs/interpreter.md).
+#include <cstdio>
+
+#include "batch.hpp"
+#include "options.hpp"
+#include "viewer.hpp"
+
+int main(int argc, char** argv) {
+  vvi::parse_result p = vvi::parse_options(argc, argv);
+  if (!p.ok) {
+    std::fprintf(stderr, "%s", p.message.c_str());
+    return 2;
+  }
+  if (p.exit_now) {
+    std::printf("%s", p.message.c_str());
+    return 0;
+  }
+  if (p.opts.compile_only) return vvi::run_compile_only(p.opts);
+  if (p.opts.batch) return vvi::run_batch(p.opts);
+  return vvi::run_viewer(p.opts);
+}

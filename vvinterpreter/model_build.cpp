@@ -1,0 +1,231 @@
+#include "model_build.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <filesystem>
+#include <regex>
+#include <sstream>
+#include <unistd.h>
+
+#include "build_config.hpp"
+#include "files.hpp"
+#include "hashing.hpp"
+#include "process.hpp"
+#include "translate.hpp"
+
+namespace vvi {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+double ms_since(std::chrono::steady_clock::time_point t) {
+  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t).count();
+}
+
+bool ends_with(const std::string& s, const std::string& tail) {
+  return s.size() >= tail.size() && s.compare(s.size() - tail.size(), tail.size(), tail) == 0;
+}
+
+// The options every model and the precompiled header share (they must
+// match for the header to be used).
+std::vector<std::string> common_flags(const build_settings& s, const std::string& include) {
+  std::vector<std::string> f = {"-std=c++17", "-O" + std::to_string(s.optimization), "-fPIC",
+                                "-fvisibility=hidden", "-fvisibility-inlines-hidden",
+                                // so that unloading a model really unloads it (rewind, reload)
+                                "-fno-gnu-unique"};
+  std::istringstream extra(config::sanitize_flags);
+  for (std::string w; extra >> w;) f.push_back(w);
+  f.push_back("-isystem");
+  f.push_back(include);
+  return f;
+}
+
+// A stamp of the vvlib headers: any change to them makes new builds.
+std::string headers_stamp(const std::string& include) {
+  content_hash h;
+  std::vector<std::string> files;
+  std::error_code ec;
+  for (auto it = fs::recursive_directory_iterator(include, ec); !ec && it != fs::recursive_directory_iterator();
+       it.increment(ec))
+    if (it->is_regular_file() && it->path().extension() == ".hpp") files.push_back(it->path().string());
+  std::sort(files.begin(), files.end());
+  for (const std::string& f : files) h.add(f).add(read_file(f).value_or(""));
+  return h.hex();
+}
+
+std::string join(const std::vector<std::string>& argv) {
+  std::string s;
+  for (const std::string& a : argv) s += (s.empty() ? "" : " ") + a;
+  return s;
+}
+
+// Builds the precompiled vv/model.hpp for these flags, once per cache.
+std::string precompiled_header_dir(const build_settings& s, const std::string& include,
+                                   const std::string& stamp, std::string& error) {
+  std::vector<std::string> flags = common_flags(s, include);
+  std::string key = content_hash().add(config::cxx_compiler).add(join(flags)).add(stamp).hex();
+  std::string dir = s.cache_dir + "/pch/" + key;
+  std::string gch = dir + "/vv/model.hpp.gch";
+  if (fs::exists(gch)) return dir;
+  std::error_code ec;
+  fs::create_directories(dir + "/vv", ec);
+  std::string tmp = gch + ".tmp" + std::to_string(getpid());
+  std::vector<std::string> argv = {config::cxx_compiler};
+  argv.insert(argv.end(), flags.begin(), flags.end());
+  argv.insert(argv.end(), {"-x", "c++-header", include + "/vv/model.hpp", "-o", tmp});
+  process_result r = run_process(argv);
+  if (r.status != 0) {
+    fs::remove(tmp, ec);
+    error = "cannot precompile vv/model.hpp:\n" + r.output;
+    return "";
+  }
+  fs::rename(tmp, gch, ec);  // another process may have won the race: either copy is good
+  return dir;
+}
+
+// The files a plugin was built from, other than vvlib's and the system's,
+// with their content hashes (to tell whether a cached build is still good).
+std::string dependency_list(const std::string& depfile, const std::string& include) {
+  std::string text = read_file(depfile).value_or("");
+  std::string out;
+  std::istringstream words(text);
+  for (std::string w; words >> w;) {
+    if (w == "\\" || ends_with(w, ":") || w.rfind(include, 0) == 0 || w.rfind("/usr/", 0) == 0) continue;
+    if (!ends_with(w, ".cpp")) out += content_hash().add(read_file(w).value_or("")).hex() + " " + w + "\n";
+  }
+  return out;
+}
+
+bool dependencies_unchanged(const std::string& list) {
+  std::istringstream lines(list);
+  for (std::string hash, path; lines >> hash >> path;)
+    if (content_hash().add(read_file(path).value_or("")).hex() != hash) return false;
+  return true;
+}
+
+}  // namespace
+
+std::string vvlib_include_dir() {
+  std::error_code ec;
+  fs::path bin = fs::weakly_canonical(config::install_bindir, ec);
+  if (!executable_dir().empty() && fs::path(executable_dir()) == bin && fs::exists(config::install_include))
+    return config::install_include;
+  return config::build_tree_include;
+}
+
+std::string filter_compiler_output(const std::string& output, const std::string& vvlib_dir) {
+  // A line that starts a message names its file first: "f:12:5: error: ..."
+  // or "f: In function ...". The lines after it (source, caret, notes
+  // without a place) belong to it.
+  static const std::regex located(R"(^([^ :][^:]*):\d+:\d+: )");
+  std::istringstream in(output);
+  std::string kept, line;
+  bool keeping = false;
+  for (std::size_t n = 0; std::getline(in, line); ++n) {
+    std::smatch m;
+    if (std::regex_search(line, m, located) || (line.find(": In ") != std::string::npos && line[0] != ' ')) {
+      std::string path = line.substr(0, line.find(':'));
+      keeping = path.rfind(vvlib_dir, 0) != 0 && path.rfind("/usr/", 0) != 0;
+    } else if (line.rfind("In file included from", 0) == 0 || line.rfind("                 from", 0) == 0) {
+      keeping = false;
+      continue;
+    }
+    if (keeping) kept += line + "\n";
+  }
+  return kept;
+}
+
+build_result build_model(const std::string& path, const build_settings& s) {
+  build_result r;
+  if (ends_with(path, ".so")) {  // a prebuilt plugin
+    if (!fs::exists(path)) {
+      r.error = path + ": error: no such file";
+      return r;
+    }
+    r.ok = true;
+    r.plugin = fs::absolute(path).string();
+    r.cached = true;
+    return r;
+  }
+
+  auto t0 = std::chrono::steady_clock::now();
+  std::string unreadable;
+  vvc::translation t = vvc::translate_file(path, &unreadable);
+  r.translate_ms = ms_since(t0);
+  r.sources = t.sources.paths();
+  if (!t.ok) {
+    if (!unreadable.empty()) {
+      r.error = path + ": error: cannot read the model: " + unreadable;
+      r.details = r.error + "\n";
+      return r;
+    }
+    for (const auto& d : t.diag.list()) r.details += vvc::format(d);
+    r.error = r.details.substr(0, r.details.find('\n'));
+    return r;
+  }
+
+  std::string include = vvlib_include_dir();
+  std::string stamp = headers_stamp(include);
+  std::vector<std::string> flags = common_flags(s, include);
+  std::string model_dir = folder_of(path);
+  std::string key = content_hash()
+                        .add(vvc::version())
+                        .add(config::cxx_compiler)
+                        .add(join(flags))
+                        .add(stamp)
+                        .add(model_dir)
+                        .add(t.cpp)
+                        .hex();
+  std::string entry = s.cache_dir + "/plugins/" + key;
+  std::string plugin = entry + "/model.so";
+  if (!s.force && fs::exists(plugin) && dependencies_unchanged(read_file(entry + "/deps").value_or(""))) {
+    r.ok = true;
+    r.cached = true;
+    r.plugin = plugin;
+    r.warnings = read_file(entry + "/warnings").value_or("");
+    return r;
+  }
+
+  auto t1 = std::chrono::steady_clock::now();
+  std::string pch_error;
+  std::string pch = precompiled_header_dir(s, include, stamp, pch_error);
+  std::error_code ec;
+  std::string work = s.cache_dir + "/plugins/tmp-" + key + "-" + std::to_string(getpid());
+  fs::create_directories(work, ec);
+  if (ec || !write_file(work + "/model.cpp", t.cpp)) {
+    r.error = entry + ": error: cannot write to the model cache";
+    return r;
+  }
+  std::vector<std::string> argv = {config::cxx_compiler};
+  argv.insert(argv.end(), flags.begin(), flags.end());
+  if (!pch.empty()) argv.insert(argv.begin() + 1, {"-I", pch});
+  argv.insert(argv.end(), {"-Wall", "-Wextra", "-I", model_dir, "-shared", "-MD", "-MF", work + "/model.d",
+                           "-o", work + "/model.so", work + "/model.cpp", "-lpugixml", "-lGL"});
+  process_result c = run_process(argv);
+  r.compile_ms = ms_since(t1);
+  std::string about_model = filter_compiler_output(c.output, include);
+  if (c.status != 0) {
+    r.details = about_model.empty() ? c.output : about_model;
+    std::istringstream lines(r.details);
+    for (std::string line; std::getline(lines, line);)
+      if (line.find("error") != std::string::npos) {
+        r.error = line;
+        break;
+      }
+    if (r.error.empty()) r.error = path + ": error: the C++ compiler failed (" + config::cxx_compiler + ")";
+    fs::remove_all(work, ec);
+    return r;
+  }
+  write_file(work + "/deps", dependency_list(work + "/model.d", include));
+  write_file(work + "/warnings", about_model);
+  fs::rename(work, entry, ec);
+  if (ec) fs::remove_all(work, ec);  // built meanwhile by another process: use that one
+  r.ok = fs::exists(plugin);
+  r.plugin = plugin;
+  r.warnings = about_model;
+  if (!r.ok) r.error = plugin + ": error: the compiled model is missing from the cache";
+  return r;
+}
+
+}  // namespace vvi

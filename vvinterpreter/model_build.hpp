@@ -1,0 +1,41 @@
+// From a .vvp file to a loadable plugin: translate (vvc, in-process),
+// compile (the system C++ compiler, with a precompiled vvlib header), and
+// cache the result by a hash of everything that goes into it, so a model
+// that did not change starts without compiling.
+#pragma once
+
+#include <string>
+#include <vector>
+
+namespace vvi {
+
+struct build_settings {
+  std::string cache_dir;  // holds plugins/ and pch/
+  int optimization = 1;   // -O level for models
+  bool force = false;     // compile even when a cached plugin exists
+};
+
+struct build_result {
+  bool ok = false;
+  std::string plugin;                // the .so to load
+  std::string error;                 // one line: where and what ("m.vvp:3:7: error: ...")
+  std::string details;               // all diagnostics / the compiler's messages about the model
+  std::string warnings;              // the compiler's warnings about the model (shown, not fatal)
+  std::vector<std::string> sources;  // the .vvp files read (to watch for changes)
+  bool cached = false;
+  double translate_ms = 0, compile_ms = 0;
+};
+
+//! Builds (or finds in the cache) the plugin of a .vvp file. A .so path is
+//! taken as a prebuilt plugin.
+build_result build_model(const std::string& path, const build_settings& settings);
+
+//! The include directory of vvlib models are compiled against (the build
+//! tree's, or the installed one when running from the install prefix).
+std::string vvlib_include_dir();
+
+//! Keeps the compiler's lines about the model's own files (.vvp and user
+//! headers), dropping those inside vvlib and the system's headers.
+std::string filter_compiler_output(const std::string& output, const std::string& vvlib_dir);
+
+}  // namespace vvi

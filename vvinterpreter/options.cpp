@@ -1,0 +1,126 @@
+#include "options.hpp"
+
+#include <cstdlib>
+#include <string>
+
+#include "build_config.hpp"
+
+namespace vvi {
+
+const char* usage_text =
+    "usage: vvinterpreter [options] MODEL.vvp\n"
+    "       vvinterpreter --batch [--steps N] [--export FILE] [--mesh NAME] [--max-face N]\n"
+    "                     [--screenshot FILE.png --size WxH] [--seed S] MODEL.vvp\n"
+    "       vvinterpreter --compile-only MODEL.vvp\n"
+    "\n"
+    "Translates, compiles and runs a vv model: in a window (the default), or\n"
+    "headless with --batch: start, N steps, export, screenshot, close.\n"
+    "MODEL may also be a plugin (.so) built earlier.\n"
+    "\n"
+    "options:\n"
+    "  --batch            run without a window\n"
+    "  --steps N          steps to run in batch mode (default 0)\n"
+    "  --export FILE      write a mesh after the steps: .vvm .obj .off .ply .stl\n"
+    "  --mesh NAME        the global mesh to export or draw (default: the first)\n"
+    "  --max-face N       face orbits longer than N are holes, not faces\n"
+    "  --screenshot FILE  render a PNG after the steps (batch: offscreen)\n"
+    "  --size WxH         the screenshot's size (default 800x600)\n"
+    "  --seed S           seed of the model's random numbers (default 0)\n"
+    "  --strict           reading the old state of a never-synchronised vertex is an error\n"
+    "  --script FILE      viewer: run commands from FILE (step N, run, rewind, end,\n"
+    "                     screenshot FILE, export MESH FILE, rotate DX DY, zoom F,\n"
+    "                     wait MS, quit)\n"
+    "  --frames DIR       where proxy.record_frame writes frame_NNNNN.png (default ./frames)\n"
+    "  --compile-only     translate and compile, then exit\n"
+    "  --cache DIR        compiled models (default $VV_CACHE_DIR or ~/.cache/vv)\n"
+    "  --opt N            optimisation level for models (0-3, default 1)\n"
+    "  --quiet            no progress or summary lines\n"
+    "  --help, --version\n";
+
+namespace {
+
+bool to_unsigned(const std::string& s, unsigned long long& out) {
+  if (s.empty() || s.find_first_not_of("0123456789") != std::string::npos || s.size() > 19) return false;
+  out = std::strtoull(s.c_str(), nullptr, 10);
+  return true;
+}
+
+}  // namespace
+
+parse_result parse_options(int argc, const char* const* argv) {
+  parse_result r;
+  options& o = r.opts;
+  auto fail = [&](const std::string& msg) {
+    r.ok = false;
+    r.message = "vvinterpreter: " + msg + "\n" + usage_text;
+    return r;
+  };
+  for (int i = 1; i < argc; ++i) {
+    std::string a = argv[i];
+    auto value = [&](std::string& out) {
+      if (i + 1 >= argc) return false;
+      out = argv[++i];
+      return true;
+    };
+    auto number = [&](unsigned long long& out) {
+      std::string v;
+      return value(v) && to_unsigned(v, out);
+    };
+    unsigned long long n = 0;
+    std::string v;
+    if (a == "--help" || a == "-h") {
+      r.ok = r.exit_now = true;
+      r.message = usage_text;
+      return r;
+    } else if (a == "--version") {
+      r.ok = r.exit_now = true;
+      r.message = std::string("vvinterpreter ") + config::version + "\n";
+      return r;
+    } else if (a == "--batch") {
+      o.batch = true;
+    } else if (a == "--compile-only") {
+      o.compile_only = true;
+    } else if (a == "--strict") {
+      o.strict = true;
+    } else if (a == "--quiet") {
+      o.quiet = true;
+    } else if (a == "--steps") {
+      if (!number(n) || n > 100000000) return fail("--steps needs a count");
+      o.steps = static_cast<unsigned>(n);
+    } else if (a == "--max-face") {
+      if (!number(n) || n < 3) return fail("--max-face needs a number of corners (3 or more)");
+      o.max_face = n;
+    } else if (a == "--seed") {
+      if (!number(n)) return fail("--seed needs a non-negative number");
+      o.seed = n;
+    } else if (a == "--opt") {
+      if (!number(n) || n > 3) return fail("--opt needs a level from 0 to 3");
+      o.optimization = static_cast<int>(n);
+    } else if (a == "--size") {
+      if (!value(v)) return fail("--size needs WIDTHxHEIGHT");
+      std::size_t x = v.find('x');
+      unsigned long long w = 0, h = 0;
+      if (x == std::string::npos || !to_unsigned(v.substr(0, x), w) || !to_unsigned(v.substr(x + 1), h) ||
+          w < 1 || h < 1 || w > 16384 || h > 16384)
+        return fail("--size needs WIDTHxHEIGHT, e.g. 800x600 (at most 16384 each way)");
+      o.width = static_cast<int>(w), o.height = static_cast<int>(h);
+    } else if (a == "--export" || a == "--mesh" || a == "--screenshot" || a == "--script" ||
+               a == "--frames" || a == "--cache") {
+      if (!value(v) || v.empty()) return fail(a + " needs a value");
+      (a == "--export" ? o.export_path : a == "--mesh" ? o.mesh : a == "--screenshot" ? o.screenshot
+       : a == "--script" ? o.script : a == "--frames" ? o.frames : o.cache) = v;
+    } else if (!a.empty() && a[0] == '-') {
+      return fail("unknown option " + a);
+    } else if (o.model.empty()) {
+      o.model = a;
+    } else {
+      return fail("more than one model (" + o.model + " and " + a + ")");
+    }
+  }
+  if (o.model.empty()) return fail("no model given");
+  if (o.batch && !o.script.empty()) return fail("--script drives the viewer; it cannot be used with --batch");
+  r.ok = true;
+  return r;
+}
+
+}  // namespace vvi

@@ -1,0 +1,16 @@
+// Running a program (the compiler) and collecting what it prints.
+#pragma once
+
+#include <string>
+#include <vector>
+
+namespace vvi {
+
+struct process_result {
+  int status = -1;     // exit status; -1 if it could not start or was killed
+  std::string output;  // standard output and standard error, interleaved
+};
+
+process_result run_process(const std::vector<std::string>& argv);
+
+}  // namespace vvi

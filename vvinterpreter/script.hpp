@@ -1,0 +1,29 @@
+// --script: commands the viewer runs in its live window, one per line, so
+// the interactive viewer can be driven (and tested) without a person.
+//
+//   step N | run | rewind | end | reread | recompile | fit
+//   screenshot FILE.png | export MESH FILE | rotate DX DY | zoom F | wait MS | quit
+//
+// Blank lines and lines starting with # are skipped.
+#pragma once
+
+#include <string>
+#include <vector>
+
+namespace vvi {
+
+struct script_command {
+  enum kind_t { step, run, rewind, end, reread, recompile, fit, screenshot, export_mesh, rotate, zoom, wait, quit };
+  kind_t kind = step;
+  long count = 1;        // step N, wait MS
+  double a = 0, b = 0;   // rotate DX DY (degrees), zoom F
+  std::string path;      // screenshot, export
+  std::string mesh;      // export
+  int line = 0;
+};
+
+//! The commands of a script; on a bad line, nothing and error =
+//! "file:line: problem".
+std::vector<script_command> parse_script(const std::string& text, const std::string& name, std::string& error);
+
+}  // namespace vvi
