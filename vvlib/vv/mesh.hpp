@@ -138,10 +138,11 @@ class mesh : public Tr::mesh_props {
   std::size_t vertexCount() const noexcept { return count_; }
 
   //! `M.readXMLFile(path)`: replace M by a .vvm file (vv/io/vvm.hpp).
-  //! Relative paths resolve against the context's base_dir.
-  void readXMLFile(const std::string& path);
+  //! Relative paths resolve against the context's base_dir. An error names
+  //! the calling line first, then the file's own line and problem.
+  void readXMLFile(const std::string& path, where w = where::here());
   //! `M.writeXMLFile(path)`: save M as a .vvm file (vv/io/vvm.hpp).
-  void writeXMLFile(const std::string& path) const;
+  void writeXMLFile(const std::string& path, where w = where::here()) const;
 
   context_type* ctx() const noexcept { return ctx_; }
   //! Bytes held by the set (for memory reports).

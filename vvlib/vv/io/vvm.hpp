@@ -310,13 +310,21 @@ void write_vvm(const mesh<Tr>& m, const std::string& path) {
 }
 
 template <class Tr>
-void mesh<Tr>::readXMLFile(const std::string& path) {
-  read_vvm(*this, io::resolve(ctx_ ? ctx_->base_dir : std::string(), path));
+void mesh<Tr>::readXMLFile(const std::string& path, where w) {
+  try {
+    read_vvm(*this, io::resolve(ctx_ ? ctx_->base_dir : std::string(), path));
+  } catch (const error& e) {
+    throw error(w, "readXMLFile", e.what());
+  }
 }
 
 template <class Tr>
-void mesh<Tr>::writeXMLFile(const std::string& path) const {
-  write_vvm(*this, io::resolve(ctx_ ? ctx_->base_dir : std::string(), path));
+void mesh<Tr>::writeXMLFile(const std::string& path, where w) const {
+  try {
+    write_vvm(*this, io::resolve(ctx_ ? ctx_->base_dir : std::string(), path));
+  } catch (const error& e) {
+    throw error(w, "writeXMLFile", e.what());
+  }
 }
 
 }  // namespace vv
