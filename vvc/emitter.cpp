@@ -122,6 +122,8 @@ class emitter {
         "vv::context<vv_traits>& vv_traits::context() { return vv_model; }\n"
         "static vv::plugin::exchange vv_exchange;\n"
         "[[maybe_unused]] static vv::proxy& proxy = vv_model.host();\n"
+        "// The model's random numbers, seeded by the host (--seed).\n"
+        "[[maybe_unused]] static std::mt19937_64& vv_random() { return vv_model.random(); }\n"
         "[[maybe_unused]] static vertex vv_new_vertex() { return vv_model.new_vertex(); }\n";
     // vertex x(a1, a2, ...): the properties in declaration order.
     std::vector<std::string> fields;

@@ -107,10 +107,12 @@ bool dependencies_unchanged(const std::string& list) {
 }  // namespace
 
 std::string vvlib_include_dir() {
+  // Installed: PREFIX/bin/vvinterpreter beside PREFIX/include/vv-1, whatever
+  // the prefix (cmake --install --prefix may differ from the configured one).
+  fs::path bin = executable_dir();
+  fs::path installed = bin.parent_path() / "include" / "vv-1";
   std::error_code ec;
-  fs::path bin = fs::weakly_canonical(config::install_bindir, ec);
-  if (!executable_dir().empty() && fs::path(executable_dir()) == bin && fs::exists(config::install_include))
-    return config::install_include;
+  if (bin.filename() == "bin" && fs::exists(installed / "vv" / "model.hpp", ec)) return installed.string();
   return config::build_tree_include;
 }
 
@@ -218,6 +220,7 @@ build_result build_model(const std::string& path, const build_settings& s) {
     return r;
   }
   write_file(work + "/deps", dependency_list(work + "/model.d", include));
+  write_file(work + "/command", join(argv) + "\n");  // how it was built, for whoever looks
   write_file(work + "/warnings", about_model);
   fs::rename(work, entry, ec);
   if (ec) fs::remove_all(work, ec);  // built meanwhile by another process: use that one

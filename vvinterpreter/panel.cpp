@@ -7,8 +7,8 @@ namespace vvi {
 panel_actions draw_panel(const panel_state& s) {
   panel_actions a;
   ImGui::SetNextWindowPos(ImVec2(10, 10), ImGuiCond_FirstUseEver);
-  ImGui::SetNextWindowSize(ImVec2(330, 0), ImGuiCond_FirstUseEver);
-  ImGui::Begin("vv");
+  ImGui::SetNextWindowSizeConstraints(ImVec2(300, 0), ImVec2(520, 2000));
+  ImGui::Begin("vv", nullptr, ImGuiWindowFlags_AlwaysAutoResize);
   ImGui::TextUnformatted(s.model.c_str());
   ImGui::TextDisabled("%s", s.status.c_str());
   ImGui::Separator();

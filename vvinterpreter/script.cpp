@@ -35,6 +35,9 @@ std::vector<script_command> parse_script(const std::string& text, const std::str
     } else if (word == "screenshot") {
       c.kind = script_command::screenshot;
       ok = static_cast<bool>(words >> c.path);
+    } else if (word == "window-screenshot") {
+      c.kind = script_command::window_screenshot;
+      ok = static_cast<bool>(words >> c.path);
     } else if (word == "export") {
       c.kind = script_command::export_mesh;
       ok = static_cast<bool>(words >> c.mesh >> c.path);

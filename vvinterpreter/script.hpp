@@ -2,7 +2,8 @@
 // the interactive viewer can be driven (and tested) without a person.
 //
 //   step N | run | rewind | end | reread | recompile | fit
-//   screenshot FILE.png | export MESH FILE | rotate DX DY | zoom F | wait MS | quit
+//   screenshot FILE.png | window-screenshot FILE.png (with the panel)
+//   export MESH FILE | rotate DX DY | zoom F | wait MS | quit
 //
 // Blank lines and lines starting with # are skipped.
 #pragma once
@@ -13,7 +14,9 @@
 namespace vvi {
 
 struct script_command {
-  enum kind_t { step, run, rewind, end, reread, recompile, fit, screenshot, export_mesh, rotate, zoom, wait, quit };
+  enum kind_t {
+    step, run, rewind, end, reread, recompile, fit, screenshot, window_screenshot, export_mesh, rotate, zoom, wait, quit
+  };
   kind_t kind = step;
   long count = 1;        // step N, wait MS
   double a = 0, b = 0;   // rotate DX DY (degrees), zoom F

@@ -227,6 +227,10 @@ class viewer {
     panel_actions a = draw_panel(panel());
     ImGui::Render();
     ImGui_ImplOpenGL2_RenderDrawData(ImGui::GetDrawData());
+    if (!window_shot_path_.empty() && w > 0 && h > 0) {
+      save(window_shot_path_, w, h);
+      window_shot_path_.clear();
+    }
     glfwSwapBuffers(window_);
     act(a);
   }
@@ -364,7 +368,9 @@ class viewer {
   // screenshots, builds).
   void run_script() {
     while (script_pos_ < script_.size()) {
-      if (building_ || run_left_ > 0 || now_seconds() < wait_until_ || !shot_path_.empty()) return;
+      if (building_ || run_left_ > 0 || now_seconds() < wait_until_ || !shot_path_.empty() ||
+          !window_shot_path_.empty())
+        return;
       const script_command& c = script_[script_pos_++];
       switch (c.kind) {
         case script_command::step: run_left_ += static_cast<unsigned>(c.count); return;
@@ -375,6 +381,7 @@ class viewer {
         case script_command::recompile: start_build(true); return;
         case script_command::fit: fit(); break;
         case script_command::screenshot: shot_path_ = c.path; return;
+        case script_command::window_screenshot: window_shot_path_ = c.path; return;
         case script_command::export_mesh: export_from_script(c); break;
         case script_command::rotate: cam_.rotate_degrees(c.a, c.b); break;
         case script_command::zoom: cam_.zoom(c.a); break;
@@ -424,7 +431,7 @@ class viewer {
   bool animating_ = false, render_failed_ = false, record_frame_ = false;
   unsigned run_left_ = 0;
   double last_animated_ = 0, last_watch_ = 0, wait_until_ = 0;
-  std::string shot_path_;
+  std::string shot_path_, window_shot_path_;
   int screenshots_ = 0;
   int dragging_ = 0;
   double mouse_x_ = 0, mouse_y_ = 0;

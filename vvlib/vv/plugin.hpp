@@ -17,6 +17,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <cstdlib>
 #include <exception>
 #include <limits>
 #include <string>
@@ -106,6 +107,10 @@ void configure(context<Tr>& ctx, const vv_plugin_settings& s) {
   ctx.base_dir = s.model_dir ? s.model_dir : "";
   ctx.seed(s.seed);
   ctx.strict_old_state = s.strict_old_state != 0;
+  // Programs written for vv 1.1 draw from the C library's generators:
+  // seed them too, so every run with the same seed is the same.
+  std::srand(static_cast<unsigned>(s.seed));
+  srand48(static_cast<long>(s.seed));
 }
 
 template <class Tr>
