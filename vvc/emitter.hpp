@@ -21,7 +21,8 @@
 namespace vvc {
 
 struct emit_options {
-  std::string version;  // written into the header comment
+  std::string version;     // written into the header comment
+  std::string source_dir;  // the main .vvp's folder: relative paths resolve against it
 };
 
 std::string emit(const program& p, const emit_options& options);

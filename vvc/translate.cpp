@@ -1,5 +1,7 @@
 #include "translate.hpp"
 
+#include <filesystem>
+
 #include "emitter.hpp"
 #include "lexer.hpp"
 #include "parser.hpp"
@@ -9,25 +11,31 @@ namespace vvc {
 const char* version() { return "0.1.0"; }
 
 namespace {
-void run(translation& t, const source_file& file) {
+void run(translation& t, const source_file& file, std::string source_dir) {
   std::vector<token> tokens = lex(file, t.sources, t.diag);
   program p = parser(tokens, t.diag).parse_program();
   if (t.diag.any()) return;
-  t.cpp = emit(p, emit_options{version()});
+  t.cpp = emit(p, emit_options{version(), std::move(source_dir)});
   t.ok = true;
+}
+
+std::string absolute_folder(const std::string& path) {
+  std::error_code ec;
+  std::filesystem::path p = std::filesystem::absolute(path, ec);
+  return ec ? std::string() : p.parent_path().string();
 }
 }  // namespace
 
 translation translate_file(const std::string& path, std::string* unreadable) {
   translation t;
   const source_file* f = t.sources.load(path, unreadable);
-  if (f) run(t, *f);
+  if (f) run(t, *f, absolute_folder(path));
   return t;
 }
 
 translation translate_text(const std::string& name, std::string text) {
   translation t;
-  run(t, *t.sources.add(name, std::move(text)));
+  run(t, *t.sources.add(name, std::move(text)), "");
   return t;
 }
 

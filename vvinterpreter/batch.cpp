@@ -69,7 +69,8 @@ std::string screenshot(const options& o, session& model) {
 int run_compile_only(const options& o) {
   build_result b = build_model(o.model, settings_for(o));
   if (!b.ok) {
-    if (!b.details.empty() && b.details != b.error + "\n") std::fprintf(stderr, "%s", b.details.c_str());
+    // The whole diagnosis is this mode's output; the reason is one line.
+    if (!o.quiet) std::printf("%s", b.details.c_str());
     return fail(b.error);
   }
   report_build(o, b);

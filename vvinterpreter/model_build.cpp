@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 #include <filesystem>
+#include <fstream>
 #include <regex>
 #include <sstream>
 #include <unistd.h>
@@ -138,13 +139,15 @@ std::string filter_compiler_output(const std::string& output, const std::string&
   return kept;
 }
 
+bool is_plugin_file(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  char magic[4] = {};
+  return in.read(magic, 4) && magic[0] == 0x7f && magic[1] == 'E' && magic[2] == 'L' && magic[3] == 'F';
+}
+
 build_result build_model(const std::string& path, const build_settings& s) {
   build_result r;
-  if (ends_with(path, ".so")) {  // a prebuilt plugin
-    if (!fs::exists(path)) {
-      r.error = path + ": error: no such file";
-      return r;
-    }
+  if (is_plugin_file(path)) {  // a prebuilt plugin
     r.ok = true;
     r.plugin = fs::absolute(path).string();
     r.cached = true;
@@ -209,12 +212,13 @@ build_result build_model(const std::string& path, const build_settings& s) {
   std::string about_model = filter_compiler_output(c.output, include);
   if (c.status != 0) {
     r.details = about_model.empty() ? c.output : about_model;
-    std::istringstream lines(r.details);
-    for (std::string line; std::getline(lines, line);)
-      if (line.find("error") != std::string::npos) {
-        r.error = line;
-        break;
-      }
+    // The first message that is an error ("f:12:3: error: ..."); failing
+    // that, any line that says error (a linker's).
+    for (const char* mark : {": error:", "error"}) {
+      std::istringstream lines(r.details);
+      for (std::string line; r.error.empty() && std::getline(lines, line);)
+        if (line.find(mark) != std::string::npos) r.error = line;
+    }
     if (r.error.empty()) r.error = path + ": error: the C++ compiler failed (" + config::cxx_compiler + ")";
     fs::remove_all(work, ec);
     return r;

@@ -30,6 +30,9 @@ struct build_result {
 //! taken as a prebuilt plugin.
 build_result build_model(const std::string& path, const build_settings& settings);
 
+//! A shared object (an ELF file) rather than a .vvp.
+bool is_plugin_file(const std::string& path);
+
 //! The include directory of vvlib models are compiled against (the build
 //! tree's, or the installed one when running from the install prefix).
 std::string vvlib_include_dir();

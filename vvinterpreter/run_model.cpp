@@ -21,7 +21,8 @@ loaded_model load_model(const options& o, bool force) {
     return m;
   }
   session_settings s;
-  s.model_dir = folder_of(o.model);
+  // A plugin given on its own knows the folder it was translated from.
+  if (!is_plugin_file(o.model)) s.model_dir = folder_of(o.model);
   s.seed = o.seed;
   s.strict = o.strict;
   m.model = session::load(m.build.plugin, s, m.error);

@@ -36,7 +36,7 @@ extern "C" {
 
 //! Run settings the host passes before calling start.
 struct vv_plugin_settings {
-  const char* model_dir;   //!< relative paths in the program resolve against it
+  const char* model_dir;   //!< relative paths resolve against it (NULL/"": the .vvp's folder)
   std::uint64_t seed;      //!< seeds the model's random generator
   int strict_old_state;    //!< reading a never-synchronised old state is an error
 };
@@ -102,9 +102,11 @@ const char* guarded(exchange& x, Fn&& fn) noexcept {
   return x.last_error.c_str();
 }
 
+//! source_dir: where the program was translated from, for relative paths
+//! when the host does not name a model folder (a plugin loaded on its own).
 template <class Tr>
-void configure(context<Tr>& ctx, const vv_plugin_settings& s) {
-  ctx.base_dir = s.model_dir ? s.model_dir : "";
+void configure(context<Tr>& ctx, const vv_plugin_settings& s, const char* source_dir = "") {
+  ctx.base_dir = s.model_dir && *s.model_dir ? s.model_dir : source_dir;
   ctx.seed(s.seed);
   ctx.strict_old_state = s.strict_old_state != 0;
   // Programs written for vv 1.1 draw from the C library's generators:
