@@ -431,6 +431,28 @@ TEST(Screenshot, SecondRunGivesIdenticalPng) {
   EXPECT_TRUE(first == second) << "the two screenshots differ";
 }
 
+// Requirement: the screenshot uses the model's render and render_screen
+// blocks (legacy GL, as vv 1.1 programs draw) when it has them.
+TEST(Screenshot, RenderBlocksDrawTheModel) {
+  const std::string dir = fresh_dir("render_block");
+  ASSERT_NO_FATAL_FAILURE(batch_ok({"--screenshot", dir + "shot.png", "--size", "200x150",
+                                    test_model("render_block.vvp")}));
+  image img = load_png(dir + "shot.png");
+  ASSERT_EQ(img.width, 200);
+  ASSERT_EQ(img.height, 150);
+  std::size_t red = 0, blue_in_corner = 0;
+  for (int y = 0; y < img.height; ++y)
+    for (int x = 0; x < img.width; ++x) {
+      std::array<int, 3> c = img.at(x, y);
+      if (c[0] > 200 && c[1] < 60 && c[2] < 60) ++red;
+      // render_screen's square: pixels 20..60 from the bottom-left corner.
+      bool in_square = x >= 22 && x < 58 && y >= img.height - 58 && y < img.height - 22;
+      if (in_square && c[2] > 200 && c[0] < 60 && c[1] < 60) ++blue_in_corner;
+    }
+  EXPECT_GT(red, 500u) << "the render block's red triangles are missing";
+  EXPECT_EQ(blue_in_corner, 36u * 36u) << "render_screen's square is missing or misplaced";
+}
+
 // ===========================================================================
 // 3. --seed
 // ===========================================================================
@@ -685,6 +707,19 @@ TEST(CompileOnly, VersionedSharedLibraryNamesTheMissingEntryPoint) {
 
 // Requirement 5: editing the .vvp (a scratch copy) rebuilds it (no cache
 // line) and changes the output: here every position doubles.
+// Requirement: a plugin built for another ABI is refused with a message
+// that says so (not a crash).
+TEST(CompileOnly, PluginOfAnotherAbiIsRefused) {
+  const std::string dir = fresh_dir("other_abi");
+  std::ofstream(dir + "old.cpp") << "extern \"C\" int vv_plugin_abi_version() { return 999; }\n";
+  test_run::result c = test_run::run({VV_CXX, "-shared", "-fPIC", dir + "old.cpp", "-o", dir + "old.so"});
+  ASSERT_EQ(c.status, 0) << c.err;
+  test_run::result r = vvi({"--batch", dir + "old.so"});
+  EXPECT_EQ(r.status, 1);
+  EXPECT_NE(r.err.find("built for plugin ABI 999"), std::string::npos) << r.err;
+  EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+}
+
 TEST(CompileOnly, EditingTheModelRebuildsItAndChangesTheOutput) {
   const std::string dir = fresh_dir("edit_rebuilds");
   const std::string model = loop_copy(dir, "edited.vvp");
