@@ -12,6 +12,8 @@
 #include <iostream>
 #include <string>
 
+#include <vv/io/files.hpp>
+
 #include "translate.hpp"
 
 namespace {
@@ -27,24 +29,6 @@ const char* usage =
     "  -o FILE     where to write the C++ ('-' for standard output)\n"
     "  --help      this text\n"
     "  --version   the translator's version\n";
-
-bool write_atomically(const std::string& path, const std::string& text) {
-  std::string tmp = path + ".vvc-tmp";
-  {
-    std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
-    if (!out) return false;
-    out << text;
-    if (!out.flush()) {
-      std::remove(tmp.c_str());
-      return false;
-    }
-  }
-  if (std::rename(tmp.c_str(), path.c_str()) != 0) {
-    std::remove(tmp.c_str());
-    return false;
-  }
-  return true;
-}
 
 }  // namespace
 
@@ -92,8 +76,10 @@ int main(int argc, char** argv) {
     std::cout << t.cpp;
     return std::cout.flush() ? 0 : 1;
   }
-  if (!write_atomically(output, t.cpp)) {
-    std::cerr << output << ": error: cannot write file: " << std::strerror(errno) << "\n";
+  try {
+    vv::io::write_text_file(output, t.cpp);  // atomically: never half a file
+  } catch (const std::exception& e) {
+    std::cerr << e.what() << "\n";
     return 1;
   }
   return 0;

@@ -1,5 +1,7 @@
 #include "files.hpp"
 
+#include <vv/io/files.hpp>
+
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
@@ -20,21 +22,12 @@ std::optional<std::string> read_file(const std::string& path) {
 }
 
 bool write_file(const std::string& path, const std::string& text) {
-  std::string tmp = path + ".tmp" + std::to_string(getpid());
-  {
-    std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
-    if (!out) return false;
-    out << text;
-    if (!out.flush()) {
-      std::remove(tmp.c_str());
-      return false;
-    }
-  }
-  if (std::rename(tmp.c_str(), path.c_str()) != 0) {
-    std::remove(tmp.c_str());
+  try {
+    vv::io::write_text_file(path, text);
+    return true;
+  } catch (const std::exception&) {
     return false;
   }
-  return true;
 }
 
 std::string folder_of(const std::string& path) {
