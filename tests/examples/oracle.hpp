@@ -1,0 +1,170 @@
+// Helpers for checking the examples against independent implementations
+// (OpenMesh's and CGAL's subdividers) on the same input.
+//
+//   std::string model = oracle::input_vvm("cow", oracle::cgal_mesh_file("cow.off"));
+//   oracle::polygons ours = oracle::run_example("examples/loop.vvp", model, 2);
+//   oracle::polygons theirs = oracle::openmesh_loop(oracle::read_polygons(model), 2);
+//   oracle::expect_same_points(ours.points, theirs.points, 1e-9);
+#pragma once
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <regex>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include <util/point.hpp>
+#include <vv/io/mesh_io.hpp>
+#include <vv/vv.hpp>
+
+#include "run_interpreter.hpp"
+#include "test_files.hpp"
+
+namespace oracle {
+
+using point = std::array<double, 3>;
+
+struct polygons {
+  std::vector<point> points;
+  std::vector<std::vector<std::uint32_t>> faces;
+};
+
+struct vertex_props {
+  util::Point<double> pos;
+  template <class F>
+  void vv_fields(F&& f) {
+    f("pos", pos);
+  }
+};
+using graph = vv::graph<vertex_props>;
+
+//! A mesh file as points and counter-clockwise faces (any format vvlib reads).
+inline polygons read_polygons(const std::string& path) {
+  graph::context ctx;
+  graph::mesh m(ctx);
+  vv::read_mesh(m, path);
+  polygons p;
+  for (graph::vertex v : vv::each(m)) p.points.push_back({v->pos.x(), v->pos.y(), v->pos.z()});
+  for (const auto& f : vv::face_orbits(m))
+    if (f.size() >= 3) p.faces.push_back(f);
+  return p;
+}
+
+//! Where the CGAL demo data lives (Debian's libcgal-demo): extracts one
+//! mesh (e.g. "cow.off") into the scratch folder and gives its path.
+inline std::string cgal_mesh_file(const std::string& name) {
+  std::string out = test_files::scratch_dir() + name;
+  if (std::filesystem::exists(out)) return out;
+  std::string archive = "/usr/share/doc/libcgal-dev/data.tar.gz";
+  test_run::result r = test_run::run({"tar", "xzf", archive, "-C", test_files::scratch_dir(),
+                                      "--strip-components=2", "data/meshes/" + name});
+  EXPECT_EQ(r.status, 0) << "cannot extract " << name << " from " << archive << " (libcgal-demo): " << r.err;
+  return out;
+}
+
+//! The mesh in a file converted to a .vvm (in the scratch folder), for
+//! examples that read their input with readXMLFile.
+inline std::string input_vvm(const std::string& name, const std::string& mesh_file) {
+  std::string out = test_files::scratch_dir() + name + ".vvm";
+  graph::context ctx;
+  graph::mesh m(ctx);
+  vv::read_mesh(m, mesh_file);
+  vv::write_vvm(m, out);
+  return out;
+}
+
+//! A scratch copy of an example that reads `input` instead of its own model
+//! (the argument of its first readXMLFile call is replaced).
+inline std::string example_reading(const std::string& example, const std::string& input) {
+  std::string text = test_files::slurp(std::string(VV_SOURCE_DIR) + "/" + example);
+  std::regex first_read(R"(readXMLFile\(\s*"[^"]*"\s*\))");
+  std::smatch m;
+  EXPECT_TRUE(std::regex_search(text, m, first_read)) << example << " has no readXMLFile(\"...\")";
+  text = m.prefix().str() + "readXMLFile(\"" + input + "\")" + m.suffix().str();
+  std::string out = test_files::scratch_dir() + std::filesystem::path(example).stem().string() + "_" +
+                    std::filesystem::path(input).stem().string() + ".vvp";
+  std::ofstream(out) << text;
+  return out;
+}
+
+//! Runs an example (a .vvp path relative to the source tree, or absolute)
+//! on `input` (a .vvm; empty: its own model) for `steps` steps and gives
+//! the exported mesh; extra arguments go to the interpreter.
+inline polygons run_example(const std::string& example, const std::string& input, unsigned steps,
+                            const std::vector<std::string>& extra = {}) {
+  std::string model = example.front() == '/' ? example : std::string(VV_SOURCE_DIR) + "/" + example;
+  if (!input.empty()) model = example_reading(example, input);
+  std::string out = test_files::scratch_dir() + std::filesystem::path(model).stem().string() + "_" +
+                    std::to_string(steps) + ".vvm";
+  std::vector<std::string> args = {"--batch", "--quiet", "--steps", std::to_string(steps), "--export", out};
+  args.insert(args.end(), extra.begin(), extra.end());
+  args.push_back(model);
+  test_run::result r = test_run::run(test_run::interpreter(args), 600);
+  EXPECT_EQ(r.status, 0) << model << ": " << r.err;
+  if (r.status != 0) return {};
+  return read_polygons(out);
+}
+
+//! The diagonal of the points' bounding box (tolerances scale with it).
+inline double size_of(const std::vector<point>& pts) {
+  if (pts.empty()) return 0;
+  point lo = pts[0], hi = pts[0];
+  for (const point& p : pts)
+    for (int i = 0; i < 3; ++i) lo[i] = std::min(lo[i], p[i]), hi[i] = std::max(hi[i], p[i]);
+  return std::sqrt((hi[0] - lo[0]) * (hi[0] - lo[0]) + (hi[1] - lo[1]) * (hi[1] - lo[1]) +
+                   (hi[2] - lo[2]) * (hi[2] - lo[2]));
+}
+
+//! The same points in any order: every point of `a` has one in `b` within
+//! tol (absolute), and the counts match.
+inline void expect_same_points(std::vector<point> a, std::vector<point> b, double tol) {
+  ASSERT_EQ(a.size(), b.size()) << "different numbers of points";
+  std::sort(a.begin(), a.end());
+  std::sort(b.begin(), b.end());
+  auto close = [&](const point& p, const point& q) {
+    return std::fabs(p[0] - q[0]) <= tol && std::fabs(p[1] - q[1]) <= tol && std::fabs(p[2] - q[2]) <= tol;
+  };
+  std::size_t unmatched = 0;
+  for (std::size_t i = 0; i < a.size(); ++i) {
+    if (close(a[i], b[i])) continue;
+    // Rounding can reorder points that tie in x: search near i in x.
+    auto lo = std::lower_bound(b.begin(), b.end(), point{a[i][0] - tol, -1e300, -1e300});
+    bool found = false;
+    for (auto it = lo; it != b.end() && (*it)[0] <= a[i][0] + tol && !found; ++it) found = close(a[i], *it);
+    if (!found && ++unmatched <= 5)
+      ADD_FAILURE() << "no match for (" << a[i][0] << ", " << a[i][1] << ", " << a[i][2] << ")";
+  }
+  EXPECT_EQ(unmatched, 0u) << "of " << a.size() << " points";
+}
+
+//! Faces as cyclic sequences of positions, in any order and rotation:
+//! compares connectivity of two meshes whose vertices may be numbered
+//! differently (positions must be unique within tol).
+inline void expect_same_faces(const polygons& a, const polygons& b, double tol) {
+  ASSERT_EQ(a.faces.size(), b.faces.size()) << "different numbers of faces";
+  auto key = [&](const polygons& p) {
+    std::vector<std::vector<point>> out;
+    for (const auto& f : p.faces) {
+      std::vector<point> face;
+      for (std::uint32_t i : f) {
+        point q = p.points[i];
+        for (double& c : q) c = std::round(c / tol) * tol;  // snap: equal within tol compares equal
+        face.push_back(q);
+      }
+      std::rotate(face.begin(), std::min_element(face.begin(), face.end()), face.end());
+      out.push_back(face);
+    }
+    std::sort(out.begin(), out.end());
+    return out;
+  };
+  EXPECT_TRUE(key(a) == key(b)) << "the faces differ";
+}
+
+}  // namespace oracle
