@@ -58,6 +58,7 @@ std::string screenshot(const options& o, session& model) {
   }
   camera cam;
   cam.fit(view_box(&model, &drawing));
+  cam.rotate_degrees(o.view_yaw, o.view_pitch);
   if (!draw_frame(&model, &drawing, cam, o.width, o.height, error)) return error;
   std::string written = write_png(o.screenshot, o.width, o.height, read_pixels(o.width, o.height));
   drawing.release();

@@ -25,6 +25,7 @@ const char* usage_text =
     "  --max-face N       face orbits longer than N are holes, not faces\n"
     "  --screenshot FILE  render a PNG after the steps (batch: offscreen)\n"
     "  --size WxH         the screenshot's size (default 800x600)\n"
+    "  --view YAW PITCH   turn the screenshot's view by these degrees (default 0 0)\n"
     "  --seed S           seed of the model's random numbers (default 0)\n"
     "  --strict           reading the old state of a never-synchronised vertex is an error\n"
     "  --script FILE      viewer: run commands from FILE (step N, run, rewind, end,\n"
@@ -104,6 +105,14 @@ parse_result parse_options(int argc, const char* const* argv) {
           w < 1 || h < 1 || w > 16384 || h > 16384)
         return fail("--size needs WIDTHxHEIGHT, e.g. 800x600 (at most 16384 each way)");
       o.width = static_cast<int>(w), o.height = static_cast<int>(h);
+    } else if (a == "--view") {
+      std::string y, p;
+      char* end1 = nullptr;
+      char* end2 = nullptr;
+      if (!value(y) || !value(p)) return fail("--view needs two angles in degrees");
+      o.view_yaw = std::strtod(y.c_str(), &end1);
+      o.view_pitch = std::strtod(p.c_str(), &end2);
+      if (*end1 || *end2 || y.empty() || p.empty()) return fail("--view needs two angles in degrees");
     } else if (a == "--export" || a == "--mesh" || a == "--screenshot" || a == "--script" ||
                a == "--frames" || a == "--cache") {
       if (!value(v) || v.empty()) return fail(a + " needs a value");

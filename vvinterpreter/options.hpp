@@ -16,6 +16,7 @@ struct options {
   std::size_t max_face = 0;   // --max-face N (0: no limit)
   std::string screenshot;     // --screenshot FILE.png
   int width = 800, height = 600;  // --size WxH
+  double view_yaw = 0, view_pitch = 0;  // --view YAW PITCH (degrees, batch screenshots)
   std::uint64_t seed = 0;     // --seed S
   bool strict = false;        // --strict
   std::string script;         // --script FILE (viewer)
