@@ -125,7 +125,7 @@ std::string filter_compiler_output(const std::string& output, const std::string&
   std::istringstream in(output);
   std::string kept, line;
   bool keeping = false;
-  for (std::size_t n = 0; std::getline(in, line); ++n) {
+  while (std::getline(in, line)) {
     std::smatch m;
     if (std::regex_search(line, m, located) || (line.find(": In ") != std::string::npos && line[0] != ' ')) {
       std::string path = line.substr(0, line.find(':'));
