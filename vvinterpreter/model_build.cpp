@@ -140,6 +140,10 @@ std::string filter_compiler_output(const std::string& output, const std::string&
 }
 
 bool is_plugin_file(const std::string& path) {
+  // Only a regular file can be a plugin; peeking into a pipe would eat the
+  // beginning of a model given as <(...).
+  std::error_code ec;
+  if (!fs::is_regular_file(path, ec)) return false;
   std::ifstream in(path, std::ios::binary);
   char magic[4] = {};
   return in.read(magic, 4) && magic[0] == 0x7f && magic[1] == 'E' && magic[2] == 'L' && magic[3] == 'F';
