@@ -51,11 +51,9 @@ std::string screenshot(const options& o, session& model) {
   std::unique_ptr<offscreen> gl = offscreen::create(o.width, o.height, error);
   if (!gl) return error;
   if (!init_rendering(&model, error)) return error;
-  mesh_drawing drawing;
-  if (!model.has_block("render")) {
-    error = update_drawing(model, o.mesh, o.max_face, drawing);
-    if (!error.empty()) return error;
-  }
+  mesh_drawing drawing;  // drawn unless the model draws itself; its bounds fit the view
+  error = update_drawing(model, o.mesh, o.max_face, drawing);
+  if (!error.empty()) return error;
   camera cam;
   cam.fit(view_box(&model, &drawing));
   cam.rotate_degrees(o.view_yaw, o.view_pitch);

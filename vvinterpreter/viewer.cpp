@@ -184,8 +184,10 @@ class viewer {
     return true;
   }
 
+  // The drawing also gives the view its bounds, so it is kept up to date
+  // when the model draws itself too.
   void refresh_drawing() {
-    if (!model_ || model_->has_block("render")) return;
+    if (!model_) return;
     std::string e = update_drawing(*model_, o_.mesh, o_.max_face, drawing_);
     if (!e.empty()) show_error(e, e);
   }
