@@ -52,7 +52,7 @@ std::string screenshot(const options& o, session& model) {
   if (!gl) return error;
   if (!init_rendering(&model, error)) return error;
   mesh_drawing drawing;  // drawn unless the model draws itself; its bounds fit the view
-  error = update_drawing(model, o.mesh, o.max_face, drawing);
+  error = update_drawing(model, o.mesh, max_face_of(o, model), drawing);
   if (!error.empty()) return error;
   camera cam;
   cam.fit(view_box(&model, &drawing));
@@ -99,7 +99,7 @@ int run_batch(const options& o) {
     if (!mesh)
       return fail(o.mesh.empty() ? o.model + ": the model has no global mesh to export"
                                  : o.model + ": the model has no global mesh named " + o.mesh);
-    std::string e = export_mesh(*mesh, o.export_path, o.max_face);
+    std::string e = export_mesh(*mesh, o.export_path, max_face_of(o, model));
     if (!e.empty()) return fail(e);
     if (!o.quiet) std::printf("wrote %s\n", o.export_path.c_str());
   }

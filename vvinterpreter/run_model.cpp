@@ -44,6 +44,10 @@ box view_box(session* model, const mesh_drawing* drawing) {
   return b;
 }
 
+std::size_t max_face_of(const options& o, session& model) {
+  return o.max_face ? o.max_face : model.proxy().max_face;
+}
+
 std::string update_drawing(session& model, const std::string& mesh_name, std::size_t max_face,
                            mesh_drawing& drawing) {
   const vv_mesh_entry* m = model.mesh(mesh_name);

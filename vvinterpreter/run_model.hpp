@@ -28,6 +28,10 @@ loaded_model load_model(const options& o, bool force = false);
 //! one, else the drawing's bounds, else the unit cube.
 box view_box(session* model, const mesh_drawing* drawing);
 
+//! The longest face orbit drawn or exported: --max-face, else the
+//! program's proxy.max_face (0: no limit).
+std::size_t max_face_of(const options& o, session& model);
+
 //! Fills drawing from the chosen global mesh; "" or the error.
 std::string update_drawing(session& model, const std::string& mesh_name, std::size_t max_face,
                            mesh_drawing& drawing);

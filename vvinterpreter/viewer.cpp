@@ -188,7 +188,7 @@ class viewer {
   // when the model draws itself too.
   void refresh_drawing() {
     if (!model_) return;
-    std::string e = update_drawing(*model_, o_.mesh, o_.max_face, drawing_);
+    std::string e = update_drawing(*model_, o_.mesh, max_face_of(o_, *model_), drawing_);
     if (!e.empty()) show_error(e, e);
   }
 
@@ -402,7 +402,7 @@ class viewer {
   void export_from_script(const script_command& c) {
     const vv_mesh_entry* m = model_ ? model_->mesh(c.mesh) : nullptr;
     std::string e = !model_ ? "no model is loaded" : !m ? "the model has no global mesh named " + c.mesh
-                                                          : export_mesh(*m, c.path, o_.max_face);
+                                                          : export_mesh(*m, c.path, max_face_of(o_, *model_));
     if (e.empty()) say("wrote " + c.path);
     else show_error(e, e);
   }

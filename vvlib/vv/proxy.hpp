@@ -20,6 +20,9 @@ struct proxy {
   unsigned delay_msec = 0;    //!< pause between animated steps
   bool no_animate = false;    //!< the host ignores "animate"
   bool record_frame = false;  //!< the host saves a PNG after each step
+  //! Face orbits longer than this are holes or boundaries, not faces, when
+  //! the host draws or exports the model (0: no limit; --max-face overrides).
+  unsigned max_face = 0;
   void* viewer = nullptr;     //!< the host's canvas, opaque to programs
 
   //! The box the view must show (set by setViewVolume).
