@@ -57,6 +57,9 @@ inline polygons read_polygons(const std::string& path) {
   return p;
 }
 
+//! A mesh of the project's models/ folder, e.g. model("cube.vvm").
+inline std::string model(const std::string& name) { return std::string(VV_SOURCE_DIR) + "/models/" + name; }
+
 //! Where the CGAL demo data lives (Debian's libcgal-demo): extracts one
 //! mesh (e.g. "cow.off") into the scratch folder and gives its path.
 inline std::string cgal_mesh_file(const std::string& name) {

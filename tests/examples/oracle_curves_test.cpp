@@ -91,7 +91,7 @@ void expect_same_cycle(const curve& ours, const curve& theirs, double tol) {
   ADD_FAILURE() << "no rotation or reflection of the example's polygon matches the expected one";
 }
 
-std::string model(const std::string& name) { return std::string(VV_SOURCE_DIR) + "/models/" + name + ".vvm"; }
+std::string model(const std::string& name) { return oracle::model(name + ".vvm"); }
 
 const char* const inputs[] = {"hexagon", "square"};
 constexpr unsigned steps = 5;

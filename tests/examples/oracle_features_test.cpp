@@ -11,17 +11,15 @@
 //   loop_adaptive: a closed manifold triangle mesh after every step, the
 //     unselected vertices never move, and the selected vertices and their
 //     neighbours are where examples/loop.vvp puts them.
-#include <OpenMesh/Core/Mesh/TriMesh_ArrayKernelT.hh>
-#include <OpenMesh/Tools/Subdivider/Uniform/LoopT.hh>
-
-#include <CGAL/Simple_cartesian.h>
-#include <CGAL/Surface_mesh.h>
-#include <CGAL/subdivision_method_3.h>
 
 #include <map>
 #include <set>
 
 #include "oracle.hpp"
+#include "peers.hpp"
+
+// After peers.hpp: the subdividers rely on the OpenMesh headers it includes.
+#include <OpenMesh/Tools/Subdivider/Uniform/LoopT.hh>
 
 namespace {
 
@@ -196,44 +194,25 @@ tri_mesh tri_mesh_of(const plain& p, bool with_creases) {
 
 // ---- OpenMesh and CGAL on triangle meshes (with boundary) ----
 
-struct om_traits : OpenMesh::DefaultTraits {
-  using Point = OpenMesh::Vec3d;
-  using Normal = OpenMesh::Vec3d;
-};
-using om_mesh = OpenMesh::TriMesh_ArrayKernelT<om_traits>;
-
-std::vector<point> openmesh_loop(const oracle::polygons& in, unsigned steps) {
-  om_mesh m;
-  std::vector<om_mesh::VertexHandle> v;
-  for (const auto& p : in.points) v.push_back(m.add_vertex({p[0], p[1], p[2]}));
-  for (const auto& f : in.faces)
-    if (f.size() == 3) m.add_face(v[f[0]], v[f[1]], v[f[2]]);
-  OpenMesh::Subdivider::Uniform::LoopT<om_mesh, double> loop;
-  loop.attach(m);
-  loop(steps);
-  loop.detach();
-  std::vector<point> out;
-  for (auto h : m.vertices()) out.push_back({m.point(h)[0], m.point(h)[1], m.point(h)[2]});
-  return out;
+//! The triangles of an open mesh's export, without its boundary polygon.
+oracle::polygons triangles_only(oracle::polygons p) {
+  auto not_triangle = [](const auto& f) { return f.size() != 3; };
+  p.faces.erase(std::remove_if(p.faces.begin(), p.faces.end(), not_triangle), p.faces.end());
+  return p;
 }
 
-using cgal_mesh = CGAL::Surface_mesh<CGAL::Simple_cartesian<double>::Point_3>;
+std::vector<point> openmesh_loop(const oracle::polygons& in, unsigned steps) {
+  return peers::openmesh<peers::om_tri_mesh, OpenMesh::Subdivider::Uniform::LoopT>(triangles_only(in), steps).points;
+}
 
 std::vector<point> cgal_loop(const oracle::polygons& in, unsigned steps) {
-  cgal_mesh m;
-  std::vector<cgal_mesh::Vertex_index> v;
-  for (const auto& p : in.points) v.push_back(m.add_vertex({p[0], p[1], p[2]}));
-  for (const auto& f : in.faces)
-    if (f.size() == 3) m.add_face(v[f[0]], v[f[1]], v[f[2]]);
-  CGAL::Subdivision_method_3::Loop_subdivision(m, CGAL::parameters::number_of_iterations(steps));
-  std::vector<point> out;
-  for (auto h : m.vertices()) out.push_back({m.point(h).x(), m.point(h).y(), m.point(h).z()});
-  return out;
+  auto loop = [](auto& m, auto params) { CGAL::Subdivision_method_3::Loop_subdivision(m, params); };
+  return peers::cgal(triangles_only(in), steps, loop).points;
 }
 
 // ---- Helpers ----
 
-std::string model(const std::string& name) { return std::string(VV_SOURCE_DIR) + "/models/" + name; }
+using oracle::model;
 
 //! Runs an example and reads its export with all fields.
 plain run_plain(const std::string& example, const std::string& input, unsigned steps) {

@@ -9,11 +9,8 @@
 // old vertices disappear), so it is not used here.
 #include <map>
 
-#include <CGAL/Simple_cartesian.h>
-#include <CGAL/Surface_mesh.h>
-#include <CGAL/subdivision_method_3.h>
-
 #include "oracle.hpp"
+#include "peers.hpp"
 
 namespace {
 
@@ -47,8 +44,8 @@ oracle::polygons split(oracle::polygons p, unsigned steps) {
   return p;
 }
 
+using peers::cgal_mesh;
 using kernel = CGAL::Simple_cartesian<double>;
-using cgal_mesh = CGAL::Surface_mesh<kernel::Point_3>;
 
 // The geometry policy for CGAL's PTQ refinement: linear interpolation.
 struct linear_mask {
@@ -63,24 +60,9 @@ struct linear_mask {
   }
 };
 
+
 oracle::polygons cgal_ptq(const oracle::polygons& in, unsigned steps) {
-  cgal_mesh m;
-  std::vector<cgal_mesh::Vertex_index> v;
-  for (const auto& p : in.points) v.push_back(m.add_vertex({p[0], p[1], p[2]}));
-  for (const auto& f : in.faces) m.add_face(v[f[0]], v[f[1]], v[f[2]]);
-  CGAL::Subdivision_method_3::PTQ(m, linear_mask{&m}, CGAL::parameters::number_of_iterations(steps));
-  oracle::polygons out;
-  std::map<cgal_mesh::Vertex_index, std::uint32_t> index;
-  for (auto h : m.vertices()) {
-    index[h] = static_cast<std::uint32_t>(out.points.size());
-    out.points.push_back({m.point(h).x(), m.point(h).y(), m.point(h).z()});
-  }
-  for (auto f : m.faces()) {
-    std::vector<std::uint32_t> face;
-    for (auto h : CGAL::vertices_around_face(m.halfedge(f), m)) face.push_back(index[h]);
-    out.faces.push_back(face);
-  }
-  return out;
+  return peers::cgal(in, steps, [](cgal_mesh& m, auto params) { CGAL::Subdivision_method_3::PTQ(m, linear_mask{&m}, params); });
 }
 
 void check(const oracle::polygons& base, const oracle::polygons& ours, unsigned steps) {

@@ -3,90 +3,28 @@
 // DooSabin_subdivision; examples/corner_cutting.vvp against doo_sabin.vvp
 // (tension 9/16 on quad meshes) and against its weights worked out by hand
 // (on triangles, where it differs from Doo-Sabin).
-#include <OpenMesh/Core/Mesh/PolyMesh_ArrayKernelT.hh>
-#include <OpenMesh/Tools/Subdivider/Uniform/CatmullClarkT.hh>
-
-#include <CGAL/Simple_cartesian.h>
-#include <CGAL/Surface_mesh.h>
-#include <CGAL/subdivision_method_3.h>
 
 #include "oracle.hpp"
+#include "peers.hpp"
+
+// After peers.hpp: the subdividers rely on the OpenMesh headers it includes.
+#include <OpenMesh/Tools/Subdivider/Uniform/CatmullClarkT.hh>
 
 namespace {
 
-struct om_traits : OpenMesh::DefaultTraits {
-  using Point = OpenMesh::Vec3d;
-  using Normal = OpenMesh::Vec3d;
-};
-using om_mesh = OpenMesh::PolyMesh_ArrayKernelT<om_traits>;
+using oracle::model;
 
 oracle::polygons openmesh_catmull_clark(const oracle::polygons& in, unsigned steps) {
-  om_mesh m;
-  std::vector<om_mesh::VertexHandle> v;
-  for (const auto& p : in.points) v.push_back(m.add_vertex({p[0], p[1], p[2]}));
-  for (const auto& f : in.faces) {
-    std::vector<om_mesh::VertexHandle> face;
-    for (std::uint32_t i : f) face.push_back(v[i]);
-    m.add_face(face);
-  }
-  OpenMesh::Subdivider::Uniform::CatmullClarkT<om_mesh, double> cc;
-  cc.attach(m);
-  cc(steps);
-  cc.detach();
-  oracle::polygons out;
-  for (auto h : m.vertices()) out.points.push_back({m.point(h)[0], m.point(h)[1], m.point(h)[2]});
-  for (auto f : m.faces()) {
-    std::vector<std::uint32_t> face;
-    for (auto h : m.fv_range(f)) face.push_back(static_cast<std::uint32_t>(h.idx()));
-    out.faces.push_back(face);
-  }
-  return out;
-}
-
-using kernel = CGAL::Simple_cartesian<double>;
-using cgal_mesh = CGAL::Surface_mesh<kernel::Point_3>;
-
-cgal_mesh to_cgal(const oracle::polygons& in) {
-  cgal_mesh m;
-  std::vector<cgal_mesh::Vertex_index> v;
-  for (const auto& p : in.points) v.push_back(m.add_vertex({p[0], p[1], p[2]}));
-  for (const auto& f : in.faces) {
-    std::vector<cgal_mesh::Vertex_index> face;
-    for (std::uint32_t i : f) face.push_back(v[i]);
-    EXPECT_NE(m.add_face(face), cgal_mesh::null_face());
-  }
-  return m;
-}
-
-oracle::polygons from_cgal(const cgal_mesh& m) {
-  // Subdivision leaves removed elements behind: number the live vertices.
-  oracle::polygons out;
-  std::vector<std::uint32_t> index(m.number_of_vertices() + m.number_of_removed_vertices());
-  for (auto h : m.vertices()) {
-    index[h.idx()] = static_cast<std::uint32_t>(out.points.size());
-    out.points.push_back({m.point(h).x(), m.point(h).y(), m.point(h).z()});
-  }
-  for (auto f : m.faces()) {
-    std::vector<std::uint32_t> face;
-    for (auto h : CGAL::vertices_around_face(m.halfedge(f), m)) face.push_back(index[h.idx()]);
-    out.faces.push_back(face);
-  }
-  return out;
+  return peers::openmesh<peers::om_poly_mesh, OpenMesh::Subdivider::Uniform::CatmullClarkT>(in, steps);
 }
 
 oracle::polygons cgal_catmull_clark(const oracle::polygons& in, unsigned steps) {
-  cgal_mesh m = to_cgal(in);
-  CGAL::Subdivision_method_3::CatmullClark_subdivision(m, CGAL::parameters::number_of_iterations(steps));
-  return from_cgal(m);
+  return peers::cgal(in, steps, [](auto& m, auto params) { CGAL::Subdivision_method_3::CatmullClark_subdivision(m, params); });
 }
 
 oracle::polygons cgal_doo_sabin(const oracle::polygons& in, unsigned steps) {
-  cgal_mesh m = to_cgal(in);
-  CGAL::Subdivision_method_3::DooSabin_subdivision(m, CGAL::parameters::number_of_iterations(steps));
-  return from_cgal(m);
+  return peers::cgal(in, steps, [](auto& m, auto params) { CGAL::Subdivision_method_3::DooSabin_subdivision(m, params); });
 }
-
-std::string model(const std::string& name) { return std::string(VV_SOURCE_DIR) + "/models/" + name; }
 
 // The same points and the same faces, within 1e-9 of the mesh's size.
 void expect_same_mesh(const oracle::polygons& ours, const oracle::polygons& theirs, double size) {

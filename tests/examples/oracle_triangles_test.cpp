@@ -8,65 +8,16 @@
 //   stellar_sqrt3.vvp = sqrt3.vvp.
 // Positions agree within 1e-9 of the mesh size; faces (as cycles of
 // positions) agree where the connectivity must.
-#include <OpenMesh/Core/Mesh/TriMesh_ArrayKernelT.hh>
+
+#include "oracle.hpp"
+#include "peers.hpp"
+
+// After peers.hpp: the subdividers rely on the OpenMesh headers it includes.
 #include <OpenMesh/Tools/Subdivider/Uniform/LoopT.hh>
 #include <OpenMesh/Tools/Subdivider/Uniform/ModifiedButterFlyT.hh>
 #include <OpenMesh/Tools/Subdivider/Uniform/Sqrt3T.hh>
 
-#include <CGAL/Simple_cartesian.h>
-#include <CGAL/Surface_mesh.h>
-#include <CGAL/subdivision_method_3.h>
-
-#include "oracle.hpp"
-
 namespace {
-
-struct om_traits : OpenMesh::DefaultTraits {
-  using Point = OpenMesh::Vec3d;
-  using Normal = OpenMesh::Vec3d;
-};
-using om_mesh = OpenMesh::TriMesh_ArrayKernelT<om_traits>;
-
-// Runs one of OpenMesh's uniform subdividers on a triangle mesh.
-template <template <class, class> class Subdivider>
-oracle::polygons openmesh(const oracle::polygons& in, unsigned steps) {
-  om_mesh m;
-  std::vector<om_mesh::VertexHandle> v;
-  for (const auto& p : in.points) v.push_back(m.add_vertex({p[0], p[1], p[2]}));
-  for (const auto& f : in.faces) m.add_face(v[f[0]], v[f[1]], v[f[2]]);
-  Subdivider<om_mesh, double> subdivide;
-  subdivide.attach(m);
-  subdivide(steps);
-  subdivide.detach();
-  oracle::polygons out;
-  for (auto h : m.vertices()) out.points.push_back({m.point(h)[0], m.point(h)[1], m.point(h)[2]});
-  for (auto f : m.faces()) {
-    std::vector<std::uint32_t> face;
-    for (auto h : m.fv_range(f)) face.push_back(static_cast<std::uint32_t>(h.idx()));
-    out.faces.push_back(face);
-  }
-  return out;
-}
-
-using kernel = CGAL::Simple_cartesian<double>;
-using cgal_mesh = CGAL::Surface_mesh<kernel::Point_3>;
-
-oracle::polygons cgal_sqrt3(const oracle::polygons& in, unsigned steps) {
-  cgal_mesh m;
-  std::vector<cgal_mesh::Vertex_index> v;
-  for (const auto& p : in.points) v.push_back(m.add_vertex({p[0], p[1], p[2]}));
-  for (const auto& f : in.faces) m.add_face(v[f[0]], v[f[1]], v[f[2]]);
-  CGAL::Subdivision_method_3::Sqrt3_subdivision(m, CGAL::parameters::number_of_iterations(steps));
-  oracle::polygons out;
-  for (auto h : m.vertices()) out.points.push_back({m.point(h).x(), m.point(h).y(), m.point(h).z()});
-  for (auto f : m.faces()) {
-    std::vector<std::uint32_t> face;
-    for (auto h : CGAL::vertices_around_face(m.halfedge(f), m))
-      face.push_back(static_cast<std::uint32_t>(static_cast<std::size_t>(h)));
-    out.faces.push_back(face);
-  }
-  return out;
-}
 
 // Positions within 1e-9 of the mesh size; the faces snap positions to a
 // coarser grid (1e-6), so that rounding noise cannot split a point in two.
@@ -76,7 +27,17 @@ void expect_same_mesh(const oracle::polygons& ours, const oracle::polygons& thei
   if (faces) oracle::expect_same_faces(ours, theirs, 1e-6 * size);
 }
 
-std::string model(const std::string& name) { return std::string(VV_SOURCE_DIR) + "/models/" + name; }
+using oracle::model;
+
+// One of OpenMesh's uniform subdividers on a triangle mesh.
+template <template <class, class> class Subdivider>
+oracle::polygons openmesh(const oracle::polygons& in, unsigned steps) {
+  return peers::openmesh<peers::om_tri_mesh, Subdivider>(in, steps);
+}
+
+oracle::polygons cgal_sqrt3(const oracle::polygons& in, unsigned steps) {
+  return peers::cgal(in, steps, [](auto& m, auto params) { CGAL::Subdivision_method_3::Sqrt3_subdivision(m, params); });
+}
 
 // V, E, F after `steps` steps of a 1:4 split (Loop, butterfly) or a sqrt(3)
 // step of a closed triangle mesh.
