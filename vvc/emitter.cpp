@@ -46,16 +46,6 @@ const char* edit_function(edit_kind k) {
   return "";
 }
 
-// A C++ string literal of s.
-std::string quoted(const std::string& s) {
-  std::string out = "\"";
-  for (char c : s) {
-    if (c == '\\' || c == '"') out += '\\';
-    out += c;
-  }
-  return out + "\"";
-}
-
 const char* struct_name(const std::string& keyword) {
   return keyword == "edge" ? "vv_edge_props" : keyword == "vertex" ? "vv_vertex_props" : "vv_mesh_props";
 }
@@ -158,7 +148,7 @@ class emitter {
     std::string s = "\n// ---- plugin entry points (vv/plugin.hpp) ----\n";
     s += "VV_PLUGIN_EXPORT int vv_plugin_abi_version() { return VV_PLUGIN_ABI_VERSION; }\n";
     s += "VV_PLUGIN_EXPORT void vv_plugin_configure(const vv_plugin_settings* vv_settings) {\n"
-         "  vv::plugin::configure(vv_model, *vv_settings, " + quoted(o_.source_dir) + ");\n}\n";
+         "  vv::plugin::configure(vv_model, *vv_settings, " + cpp_string_literal(o_.source_dir) + ");\n}\n";
     static const char* const names[] = {"start", "step", "end", "close", "render_init", "render", "render_screen"};
     std::string present;
     for (const char* name : names) {

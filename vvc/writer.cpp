@@ -8,16 +8,16 @@ namespace {
 
 bool word_char(char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; }
 
-std::string quoted_path(const std::string& p) {
+}  // namespace
+
+std::string cpp_string_literal(const std::string& s) {
   std::string out = "\"";
-  for (char c : p) {
+  for (char c : s) {
     if (c == '\\' || c == '"') out += '\\';
     out += c;
   }
   return out + "\"";
 }
-
-}  // namespace
 
 void writer::newline() {
   out_ += '\n';
@@ -32,7 +32,7 @@ void writer::sync(const vvc::token& t) {
     return;
   }
   if (!at_line_start) newline();
-  out_ += "#line " + std::to_string(t.line) + " " + quoted_path(t.file->path) + "\n";
+  out_ += "#line " + std::to_string(t.line) + " " + cpp_string_literal(t.file->path) + "\n";
   file_ = t.file;
   line_ = t.line;
 }

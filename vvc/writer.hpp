@@ -11,6 +11,9 @@
 
 namespace vvc {
 
+//! s as a C++ string literal (for paths in #line directives and generated code).
+std::string cpp_string_literal(const std::string& s);
+
 class writer {
  public:
   //! A source token, on its line, spaced as in the source.

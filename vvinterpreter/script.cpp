@@ -1,8 +1,21 @@
 #include "script.hpp"
 
+#include <map>
 #include <sstream>
 
 namespace vvi {
+
+namespace {
+
+// The commands that take no arguments.
+const std::map<std::string, script_command::kind_t> plain_commands = {
+    {"run", script_command::run},       {"rewind", script_command::rewind},
+    {"end", script_command::end},       {"reread", script_command::reread},
+    {"recompile", script_command::recompile}, {"fit", script_command::fit},
+    {"quit", script_command::quit},
+};
+
+}  // namespace
 
 std::vector<script_command> parse_script(const std::string& text, const std::string& name, std::string& error) {
   std::vector<script_command> out;
@@ -41,20 +54,8 @@ std::vector<script_command> parse_script(const std::string& text, const std::str
     } else if (word == "export") {
       c.kind = script_command::export_mesh;
       ok = static_cast<bool>(words >> c.mesh >> c.path);
-    } else if (word == "run") {
-      c.kind = script_command::run;
-    } else if (word == "rewind") {
-      c.kind = script_command::rewind;
-    } else if (word == "end") {
-      c.kind = script_command::end;
-    } else if (word == "reread") {
-      c.kind = script_command::reread;
-    } else if (word == "recompile") {
-      c.kind = script_command::recompile;
-    } else if (word == "fit") {
-      c.kind = script_command::fit;
-    } else if (word == "quit") {
-      c.kind = script_command::quit;
+    } else if (auto plain = plain_commands.find(word); plain != plain_commands.end()) {
+      c.kind = plain->second;
     } else {
       return bad("unknown command '" + word + "'");
     }
