@@ -185,7 +185,34 @@ class emitter {
       }
       s += "  };\n  *vv_count = " + std::to_string(p_.global_meshes.size()) + ";\n  return vv_table;\n}\n";
     }
+    s += union_entry_points();
     w_.generated(s);
+  }
+
+  // The union of several global meshes (vvinterpreter --mesh A,B).
+  std::string union_entry_points() const {
+    std::string s;
+    if (p_.global_meshes.empty()) {
+      s += "VV_PLUGIN_EXPORT const char* vv_plugin_union_vvm(const char* const*, std::size_t, const char*) {\n"
+           "  return \"the model has no global mesh\";\n}\n";
+      s += "VV_PLUGIN_EXPORT const char* vv_plugin_union_geometry(const char* const*, std::size_t, std::size_t,\n"
+           "                                                      vv_geometry*) {\n"
+           "  return \"the model has no global mesh\";\n}\n";
+      return s;
+    }
+    s += "static const vv::plugin::named_mesh<vv_traits> vv_named_meshes[] = {";
+    for (const token* m : p_.global_meshes) {
+      std::string n(m->text);
+      s += "{\"" + n + "\", &" + n + "}, ";
+    }
+    s += "};\n";
+    s += "VV_PLUGIN_EXPORT const char* vv_plugin_union_vvm(const char* const* vv_names, std::size_t vv_n,\n"
+         "                                                 const char* vv_path) {\n"
+         "  return vv::plugin::union_vvm(vv_exchange, vv_named_meshes, vv_names, vv_n, vv_path);\n}\n";
+    s += "VV_PLUGIN_EXPORT const char* vv_plugin_union_geometry(const char* const* vv_names, std::size_t vv_n,\n"
+         "                                                      std::size_t vv_max_face, vv_geometry* vv_out) {\n"
+         "  return vv::plugin::union_geometry(vv_exchange, vv_named_meshes, vv_names, vv_n, vv_max_face, vv_out);\n}\n";
+    return s;
   }
 
   // ---- expressions ----

@@ -2,9 +2,9 @@
 // for regression tests (see docs/interpreter.md).
 #include <cstdio>
 
-#include "batch.hpp"
-#include "options.hpp"
-#include "viewer.hpp"
+#include "batch/batch.hpp"
+#include "app/options.hpp"
+#include "viewer/viewer.hpp"
 
 int main(int argc, char** argv) {
   vvi::parse_result p = vvi::parse_options(argc, argv);

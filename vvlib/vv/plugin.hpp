@@ -13,13 +13,19 @@
 //   int vv_plugin_has_block(const char* name);  // "start", "step", ...
 //   vv::proxy* vv_plugin_proxy(void);
 //   const vv_mesh_entry* vv_plugin_meshes(size_t* count);  // global meshes, in order
+//   const char* vv_plugin_union_vvm(const char* const* names, size_t n, const char* path);
+//   const char* vv_plugin_union_geometry(const char* const* names, size_t n,
+//                                        size_t max_face, vv_geometry* out);
+//                                         // the union of several global meshes
 #pragma once
 
 #include <cstddef>
 #include <cstdint>
 #include <cstdlib>
 #include <exception>
+#include <stdexcept>
 #include <limits>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -29,7 +35,7 @@
 #include "orbits.hpp"
 #include "proxy.hpp"
 
-#define VV_PLUGIN_ABI_VERSION 1
+#define VV_PLUGIN_ABI_VERSION 2
 #define VV_PLUGIN_EXPORT extern "C" __attribute__((visibility("default")))
 
 extern "C" {
@@ -76,6 +82,11 @@ const char* vv_plugin_reread(void);
 int vv_plugin_has_block(const char* name);
 vv::proxy* vv_plugin_proxy(void);
 const vv_mesh_entry* vv_plugin_meshes(std::size_t* count);
+//! The union of the named global meshes (a vertex in several counts once),
+//! written as .vvm or given as polygons.
+const char* vv_plugin_union_vvm(const char* const* names, std::size_t count, const char* path);
+const char* vv_plugin_union_geometry(const char* const* names, std::size_t count, std::size_t max_face,
+                                     vv_geometry* out);
 
 }  // extern "C"
 
@@ -86,6 +97,7 @@ struct exchange {
   std::string last_error;
   std::vector<double> positions;
   std::vector<std::uint32_t> face_offsets, face_vertices;
+  std::shared_ptr<void> union_mesh;  //!< the last union_geometry's mesh
 };
 
 //! Runs fn, turning any exception into the returned message (or NULL).
@@ -146,6 +158,43 @@ const char* geometry(exchange& x, const mesh<Tr>& m, std::size_t max_face, vv_ge
     out->face_offsets = x.face_offsets.data();
     out->face_vertices = x.face_vertices.data();
   });
+}
+
+//! One global mesh of the program, by name (for unions).
+template <class Tr>
+struct named_mesh {
+  const char* name;
+  const mesh<Tr>* m;
+};
+
+//! The union of the named meshes; throws naming an unknown one.
+template <class Tr, std::size_t N>
+mesh<Tr> union_of(const named_mesh<Tr> (&all)[N], const char* const* names, std::size_t count) {
+  mesh<Tr> u(*all[0].m->ctx());
+  for (std::size_t i = 0; i < count; ++i) {
+    const mesh<Tr>* found = nullptr;
+    for (const named_mesh<Tr>& n : all)
+      if (std::string(n.name) == names[i]) found = n.m;
+    if (!found) throw std::runtime_error(std::string("the model has no global mesh named ") + names[i]);
+    u.merge(*found);
+  }
+  return u;
+}
+
+template <class Tr, std::size_t N>
+const char* union_vvm(exchange& x, const named_mesh<Tr> (&all)[N], const char* const* names, std::size_t count,
+                      const char* path) noexcept {
+  return guarded(x, [&] { vv::write_vvm(union_of(all, names, count), path); });
+}
+
+template <class Tr, std::size_t N>
+const char* union_geometry(exchange& x, const named_mesh<Tr> (&all)[N], const char* const* names,
+                           std::size_t count, std::size_t max_face, vv_geometry* out) noexcept {
+  // The union lives in the exchange until the next call: the geometry
+  // points into data computed from it.
+  const char* e = guarded(x, [&] { x.union_mesh = std::make_shared<mesh<Tr>>(union_of(all, names, count)); });
+  if (e) return e;
+  return geometry(x, *std::static_pointer_cast<mesh<Tr>>(x.union_mesh), max_face, out);
 }
 
 }  // namespace vv::plugin

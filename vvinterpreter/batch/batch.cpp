@@ -1,0 +1,137 @@
+#include "batch/batch.hpp"
+
+#include <chrono>
+#include <cstdio>
+#include <unistd.h>
+
+#include "render/image.hpp"
+#include "render/offscreen.hpp"
+#include "runner/crash_report.hpp"
+#include "runner/model_runner.hpp"
+#include "runner/supervisor.hpp"
+#include "render/scene.hpp"
+
+namespace vvi {
+
+namespace {
+
+int fail(const std::string& why) {
+  std::fprintf(stderr, "vvinterpreter: %s\n", why.c_str());
+  return 1;
+}
+
+void report_build(const options& o, const build_result& b) {
+  if (!b.warnings.empty()) std::fprintf(stderr, "%s", b.warnings.c_str());
+  if (o.quiet) return;
+  if (b.cached) std::printf("%s: compiled model found in the cache\n", o.model.c_str());
+  else std::printf("%s: translated in %.0f ms, compiled in %.2f s\n", o.model.c_str(), b.translate_ms, b.compile_ms / 1000);
+}
+
+// "step 12/100, 3.4 s" on one line, only when a person watches standard error.
+class progress {
+ public:
+  progress(unsigned total, bool quiet) : total_(total), on_(!quiet && isatty(STDERR_FILENO) && total > 1) {}
+  void update(unsigned done) {
+    if (!on_) return;
+    auto now = std::chrono::steady_clock::now();
+    if (done < total_ && now - last_ < std::chrono::milliseconds(100)) return;
+    last_ = now;
+    double s = std::chrono::duration<double>(now - start_).count();
+    std::fprintf(stderr, "\rstep %u/%u, %.1f s", done, total_, s);
+    if (done == total_) std::fprintf(stderr, "\n");
+  }
+
+ private:
+  unsigned total_;
+  bool on_;
+  std::chrono::steady_clock::time_point start_ = std::chrono::steady_clock::now(), last_{};
+};
+
+std::string screenshot(const options& o, model_runner& runner) {
+  std::string error;
+  std::unique_ptr<offscreen> gl = offscreen::create(o.width, o.height, error);
+  if (!gl) return error;
+  session* model = runner.model();
+  if (!init_rendering(model, error)) return error;
+  mesh_drawing drawing;  // drawn unless the model draws itself; its bounds fit the view
+  vv_geometry g{};
+  error = runner.geometry(g);
+  if (!error.empty()) return error;
+  drawing.update(g);
+  camera cam;
+  cam.fit(view_box(model, &drawing));
+  cam.rotate_degrees(o.view_yaw, o.view_pitch);
+  if (!draw_frame(model, &drawing, cam, o.width, o.height, error)) return error;
+  std::string written = write_png(o.screenshot, o.width, o.height, read_pixels(o.width, o.height));
+  drawing.release();
+  return written;
+}
+
+// The batch run itself, in the supervised child process.
+int run_model_headless(const options& o) {
+  model_runner runner(o);
+  build_result b = runner.build(false);
+  if (!b.ok) return fail(b.error);
+  report_build(o, b);
+  if (!runner.load(b.plugin)) return fail(runner.error());
+  progress bar(o.steps, o.quiet);
+  auto t0 = std::chrono::steady_clock::now();
+  for (unsigned i = 0; i < o.steps; ++i) {
+    if (!runner.step()) return fail(runner.error());
+    bar.update(i + 1);
+  }
+  double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  if (o.end_block && !runner.end()) return fail(runner.error());
+  session& model = *runner.model();
+  if (!o.quiet) {
+    std::printf("%u steps in %.3f s\n", o.steps, seconds);
+    for (const vv_mesh_entry* mesh : model.meshes()) std::printf("mesh %s: %zu vertices\n", mesh->name, mesh->vertex_count());
+  }
+  if (!o.export_path.empty()) {
+    std::string e = runner.export_to(o.export_path);
+    if (!e.empty()) return fail(e);
+    if (!o.quiet) std::printf("wrote %s\n", o.export_path.c_str());
+  }
+  if (!o.screenshot.empty()) {
+    std::string e = screenshot(o, runner);
+    if (!e.empty()) return fail(e);
+    if (!o.quiet) std::printf("wrote %s\n", o.screenshot.c_str());
+  }
+  runner.close();
+  if (!runner.error().empty()) return fail(runner.error());
+  return 0;
+}
+
+}  // namespace
+
+int run_compile_only(const options& o) {
+  build_result b = model_runner(o).build(false);
+  if (!b.ok) {
+    // The whole diagnosis is this mode's output; the reason is one line.
+    if (!o.quiet) std::printf("%s", b.details.c_str());
+    return fail(b.error);
+  }
+  report_build(o, b);
+  if (!o.quiet) std::printf("%s\n", b.plugin.c_str());
+  return 0;
+}
+
+int run_batch(const options& o) {
+  // The model runs in a child process: a crash or a step past its time
+  // limit ends the run with a message, not with this process.
+  supervision s;
+  s.activity_timeout = o.step_timeout;
+  child_end end = run_supervised([&] { return run_model_headless(o); }, s);
+  switch (end.kind) {
+    case child_end::exited: return end.exit_code;
+    case child_end::timed_out: return fail(describe_timeout(end, o.model, o.step_timeout));
+    case child_end::crashed: {
+      crash_text t = describe_crash(end, o.model);
+      std::fprintf(stderr, "vvinterpreter: %s\n%s", t.line.c_str(), t.stack.c_str());
+      return 1;
+    }
+  }
+  return 1;
+}
+
+}  // namespace vvi

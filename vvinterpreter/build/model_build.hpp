@@ -1,0 +1,45 @@
+// From a .vvp file to a loadable plugin: translate (vvc, in-process),
+// compile (the system C++ compiler, with a precompiled vvlib header), and
+// cache the result by a hash of everything that goes into it, so a model
+// that did not change starts without compiling.
+#pragma once
+
+#include <string>
+#include <vector>
+
+namespace vvi {
+
+struct build_settings {
+  std::string cache_dir;  // holds plugins/ and pch/
+  int optimization = 1;   // -O level for models
+  bool debug = false;     // -g -O0, for gdb (the generated C++ stays in the cache entry)
+  bool force = false;     // compile even when a cached plugin exists
+};
+
+struct build_result {
+  bool ok = false;
+  std::string plugin;                // the .so to load (its path is new for every build)
+  std::string cpp;                   // the generated C++ beside it (for --debug and messages)
+  std::string error;                 // one line: where and what ("m.vvp:3:7: error: ...")
+  std::string details;               // all diagnostics / the compiler's messages about the model
+  std::string warnings;              // the compiler's warnings about the model (shown, not fatal)
+  //! The files the model was built from: the .vvp files read and the
+  //! headers of the model's own that the C++ includes (to watch them).
+  std::vector<std::string> sources;
+  bool cached = false;
+  double translate_ms = 0, compile_ms = 0;
+};
+
+//! Builds (or finds in the cache) the plugin of a .vvp file. A .so path is
+//! taken as a prebuilt plugin.
+build_result build_model(const std::string& path, const build_settings& settings);
+
+//! A shared object (an ELF file) rather than a .vvp.
+bool is_plugin_file(const std::string& path);
+
+//! The include directory of vvlib models are compiled against (the build
+//! tree's, or the installed one when running from the install prefix).
+std::string vvlib_include_dir();
+
+
+}  // namespace vvi

@@ -1,0 +1,39 @@
+// A crashed or stopped model, told in the modeller's terms: the .vvp line
+// where it happened, the step, and the model's call stack as .vvp lines
+// (read from the plugin's line tables with addr2line).
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "runner/supervisor.hpp"
+
+namespace vvi {
+
+struct source_frame {
+  std::string function;  //!< "the step block", "f(int)", ...
+  std::string file;      //!< as the line table names it (the .vvp path)
+  unsigned line = 0;
+};
+
+//! The frames of a crash from the innermost out, the model's .vvp frames
+//! only (frames of vvlib, the C++ library and the host are left out).
+std::vector<source_frame> model_stack(const child_end& end);
+
+//! "in step 3", "in start", "while loading the model (a global initialiser)".
+std::string activity_phrase(const child_activity& a);
+
+struct crash_text {
+  std::string line;   //!< one line: "model.vvp:20: crashed with SIGSEGV in step 2"
+  std::string panel;  //!< the viewer's wording: "model.vvp:20: crashed (SIGSEGV) in step 2"
+  std::string stack;  //!< "  model.vvp:20 in the step block\n..." (may be empty)
+};
+
+//! The report of a child that died of a signal; `model` names the .vvp
+//! when no frame of it could be found.
+crash_text describe_crash(const child_end& end, const std::string& model);
+
+//! "model.vvp: step 3 ran longer than 2 s".
+std::string describe_timeout(const child_end& end, const std::string& model, double limit_seconds);
+
+}  // namespace vvi

@@ -1,0 +1,223 @@
+#include "runner/fault_guard.hpp"
+
+#include <execinfo.h>
+#include <fcntl.h>
+#include <signal.h>
+#include <ucontext.h>
+#include <unistd.h>
+
+#include <cstdint>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <exception>
+
+namespace vvi::fault_guard {
+
+namespace {
+
+// Everything the signal handler touches is static: it may not allocate.
+int report = -1;
+char activity[32] = "";
+unsigned activity_step = 0;
+char exception_text[512] = "";
+volatile sig_atomic_t handling = 0;
+char maps_buffer[1 << 18];
+
+constexpr int fatal_signals[] = {SIGSEGV, SIGBUS, SIGFPE, SIGILL, SIGABRT};
+
+const char* signal_name(int sig) {
+  switch (sig) {
+    case SIGSEGV: return "SIGSEGV";
+    case SIGBUS: return "SIGBUS";
+    case SIGFPE: return "SIGFPE";
+    case SIGILL: return "SIGILL";
+    case SIGABRT: return "SIGABRT";
+    default: return "a signal";
+  }
+}
+
+// ---- async-signal-safe output ----
+void put_bytes(int fd, const char* s, std::size_t n) {
+  while (n > 0) {
+    ssize_t w = write(fd, s, n);
+    if (w <= 0) return;
+    s += w, n -= static_cast<std::size_t>(w);
+  }
+}
+
+// One whole line per write: lines of other threads never cut into it.
+class line {
+ public:
+  line& operator<<(const char* s) {
+    while (*s && n_ < sizeof buf_ - 1) buf_[n_++] = *s++;
+    return *this;
+  }
+  line& number(unsigned long long v, unsigned base) {
+    char digits[24];
+    int k = 0;
+    do digits[k++] = "0123456789abcdef"[v % base]; while ((v /= base) && k < 24);
+    while (k > 0 && n_ < sizeof buf_ - 1) buf_[n_++] = digits[--k];
+    return *this;
+  }
+  void send() {
+    buf_[n_++] = '\n';
+    if (report >= 0) put_bytes(report, buf_, n_);
+    n_ = 0;
+  }
+
+ private:
+  char buf_[640];
+  std::size_t n_ = 0;
+};
+
+// What the model printed but stdio still holds (a pipe is fully buffered):
+// written straight from glibc's buffer, without the stdio lock the crash
+// may have left held.
+void flush_unlocked(FILE* f) {
+  if (f->_IO_write_ptr > f->_IO_write_base) {
+    put_bytes(fileno(f), f->_IO_write_base, static_cast<std::size_t>(f->_IO_write_ptr - f->_IO_write_base));
+    f->_IO_write_ptr = f->_IO_write_base;
+  }
+}
+
+void send_maps() {
+  int fd = open("/proc/self/maps", O_RDONLY | O_CLOEXEC);
+  if (fd < 0) return;
+  std::size_t n = 0;
+  ssize_t r;
+  while (n < sizeof maps_buffer - 1 && (r = read(fd, maps_buffer + n, sizeof maps_buffer - 1 - n)) > 0)
+    n += static_cast<std::size_t>(r);
+  close(fd);
+  maps_buffer[n] = '\0';
+  // Only mappings of files: the supervisor looks up code addresses.
+  for (char* at = maps_buffer; *at;) {
+    char* eol = std::strchr(at, '\n');
+    if (eol) *eol = '\0';
+    if (std::strchr(at, '/')) {
+      line l;
+      (l << "map " << at).send();
+    }
+    at = eol ? eol + 1 : at + std::strlen(at);
+  }
+}
+
+std::uintptr_t fault_pc(void* context) {
+  auto* uc = static_cast<ucontext_t*>(context);
+#if defined(__x86_64__)
+  return static_cast<std::uintptr_t>(uc->uc_mcontext.gregs[REG_RIP]);
+#elif defined(__aarch64__)
+  return static_cast<std::uintptr_t>(uc->uc_mcontext.pc);
+#else
+  (void)uc;
+  return 0;
+#endif
+}
+
+void on_fatal(int sig, siginfo_t*, void* context) {
+  if (handling) {  // a fault while reporting one: just die
+    signal(sig, SIG_DFL);
+    raise(sig);
+    return;
+  }
+  handling = 1;
+  flush_unlocked(stdout);
+  flush_unlocked(stderr);
+  if (report >= 0) {
+    line l;
+    (l << "crash " << signal_name(sig)).send();
+    (l << "activity " << activity << " ").number(activity_step, 10).send();
+    if (exception_text[0]) (l << "exception " << exception_text).send();
+    (l << "pc ").number(fault_pc(context), 16).send();
+    void* frames[64];
+    int n = backtrace(frames, 64);
+    for (int i = 0; i < n; ++i) (l << "frame ").number(reinterpret_cast<std::uintptr_t>(frames[i]), 16).send();
+    send_maps();
+    (l << "end").send();
+  }
+  signal(sig, SIG_DFL);  // the signal is blocked here: it kills us on return
+  raise(sig);
+}
+
+void on_terminate() {
+  // Keep what the exception said; abort() then reports it with the stack,
+  // which still holds the throw (nothing caught it, so nothing unwound).
+  if (std::exception_ptr e = std::current_exception()) {
+    try {
+      std::rethrow_exception(e);
+    } catch (const std::exception& x) {
+      std::snprintf(exception_text, sizeof exception_text, "%s", x.what());
+    } catch (...) {
+      std::snprintf(exception_text, sizeof exception_text, "an exception that is not a std::exception");
+    }
+  } else {
+    std::snprintf(exception_text, sizeof exception_text, "std::terminate was called");
+  }
+  for (char* c = exception_text; *c; ++c)
+    if (*c == '\n') *c = ' ';
+  std::abort();
+}
+
+void copy_text(char* to, std::size_t size, const char* from) {
+  std::size_t i = 0;
+  for (; from[i] && i + 1 < size; ++i) to[i] = from[i];
+  to[i] = '\0';
+}
+
+}  // namespace
+
+void prepare_thread() {
+  static thread_local void* stack = nullptr;
+  if (stack) return;
+  std::size_t size = 1 << 16;
+  stack = std::malloc(size);  // lives as long as the thread (and past it: harmless)
+  stack_t ss{};
+  ss.ss_sp = stack;
+  ss.ss_size = size;
+  sigaltstack(&ss, nullptr);
+}
+
+void install(int report_fd) {
+  report = report_fd;
+  void* warm[2];
+  backtrace(warm, 2);  // loads the unwinder now, not inside a handler
+  prepare_thread();
+  struct sigaction sa {};
+  sa.sa_sigaction = on_fatal;
+  sa.sa_flags = SA_SIGINFO | SA_ONSTACK;
+  sigemptyset(&sa.sa_mask);
+  for (int sig : fatal_signals) sigaction(sig, &sa, nullptr);
+  std::set_terminate(on_terminate);
+}
+
+void begin(const char* what, unsigned step, bool announce) {
+  copy_text(activity, sizeof activity, what);
+  activity_step = step;
+  if (announce && report >= 0) {
+    line l;
+    (l << "begin " << what << " ").number(step, 10).send();
+  }
+}
+
+void finish(bool announce) {
+  if (announce && report >= 0) {
+    line l;
+    (l << "done " << activity << " ").number(activity_step, 10).send();
+  }
+  activity[0] = '\0';
+  activity_step = 0;
+}
+
+void note_module(const std::string& loaded, const std::string& original) {
+  send("module " + loaded + "\t" + original);
+}
+
+void send(const std::string& text) {
+  if (report < 0) return;
+  std::string l = text + "\n";
+  put_bytes(report, l.data(), l.size());
+}
+
+int report_fd() { return report; }
+
+}  // namespace vvi::fault_guard

@@ -1,0 +1,150 @@
+#include "runner/model_runner.hpp"
+
+#include "app/files.hpp"
+#include "runner/mesh_export.hpp"
+
+namespace vvi {
+
+build_settings build_settings_for(const options& o, bool force) {
+  build_settings s;
+  s.cache_dir = o.cache.empty() ? default_cache_dir() : o.cache;
+  s.optimization = o.optimization;
+  s.debug = o.debug;
+  s.force = force;
+  return s;
+}
+
+session_settings session_settings_for(const options& o) {
+  session_settings s;
+  // A plugin given on its own knows the folder it was translated from.
+  if (!is_plugin_file(o.model)) s.model_dir = folder_of(o.model);
+  s.seed = o.seed;
+  s.strict = o.strict;
+  return s;
+}
+
+build_result model_runner::build(bool force) const { return build_model(o_.model, build_settings_for(o_, force)); }
+
+bool model_runner::load(const std::string& plugin_path, unsigned steps) {
+  std::string error;
+  std::unique_ptr<session> fresh = session::load(plugin_path, session_settings_for(o_), error);
+  if (!fresh) {
+    error_ = error;
+    return false;
+  }
+  if (!fresh->start()) {
+    error_ = fresh->error();
+    return false;  // `fresh` closes and unloads; the running model stays
+  }
+  if (model_) model_->close();  // the old instance's close block, on the old instance
+  model_ = std::move(fresh);
+  plugin_ = plugin_path;
+  error_.clear();
+  cancel = false;
+  while (model_->steps_done() < steps && !cancel)
+    if (!step()) break;
+  return true;
+}
+
+bool model_runner::step() {
+  if (!model_) return false;
+  if (model_->step()) return true;
+  error_ = model_->error();
+  return false;
+}
+
+bool model_runner::end() {
+  if (!model_) return false;
+  if (model_->end()) return true;
+  error_ = model_->error();
+  return false;
+}
+
+bool model_runner::reread() {
+  if (!model_) return false;
+  if (model_->reread()) return true;
+  error_ = model_->error();
+  return false;
+}
+
+void model_runner::close() {
+  if (!model_) return;
+  model_->close();
+  if (!model_->error().empty()) error_ = model_->error();
+  model_.reset();
+}
+
+std::size_t model_runner::max_face() const {
+  return o_.max_face ? o_.max_face : model_ ? model_->proxy().max_face : 0;
+}
+
+namespace {
+
+std::string listed(const std::vector<std::string>& names) {
+  std::string s;
+  for (const std::string& n : names) s += (s.empty() ? "" : ", ") + n;
+  return s;
+}
+
+std::vector<const char*> c_names(const std::vector<std::string>& names) {
+  std::vector<const char*> out;
+  for (const std::string& n : names) out.push_back(n.c_str());
+  return out;
+}
+
+// "" when every name is a global mesh of the model, else the error.
+std::string unknown_mesh(const session& model, const std::string& path, const std::vector<std::string>& names) {
+  std::string known;
+  for (const vv_mesh_entry* m : model.meshes()) known += (known.empty() ? "" : ", ") + std::string(m->name);
+  for (const std::string& n : names)
+    if (!model.mesh(n))
+      return path + ": the model has no global mesh named " + n +
+             (known.empty() ? " (it has none)" : " (it has " + known + ")");
+  return "";
+}
+
+}  // namespace
+
+std::string model_runner::geometry(vv_geometry& out) const {
+  out = vv_geometry{};
+  if (!model_) return "";
+  const std::vector<std::string>& names = o_.meshes;
+  if (std::string e = unknown_mesh(*model_, o_.model, names); !e.empty()) return e;
+  if (names.size() > 1) {
+    std::vector<const char*> c = c_names(names);
+    const char* e = model_->raw().union_geometry(c.data(), c.size(), max_face(), &out);
+    return e ? e : "";
+  }
+  const vv_mesh_entry* m = model_->mesh(names.empty() ? "" : names[0]);
+  if (!m) return "";
+  const char* e = m->geometry(max_face(), &out);
+  return e ? e : "";
+}
+
+std::string model_runner::export_to(const std::string& path) const { return export_to(path, o_.meshes); }
+
+std::string model_runner::export_to(const std::string& path, const std::vector<std::string>& names) const {
+  if (!model_) return "no model is loaded";
+  if (std::string e = unknown_mesh(*model_, o_.model, names); !e.empty()) return e;
+  if (names.size() > 1) {
+    std::vector<const char*> c = c_names(names);
+    if (is_vvm_path(path)) {
+      const char* e = model_->raw().union_vvm(c.data(), c.size(), path.c_str());
+      return e ? e : "";
+    }
+    vv_geometry g{};
+    if (const char* e = model_->raw().union_geometry(c.data(), c.size(), max_face(), &g)) return e;
+    return export_polygons(g, path, "meshes " + listed(names));
+  }
+  const vv_mesh_entry* m = model_->mesh(names.empty() ? "" : names[0]);
+  if (!m) return o_.model + ": the model has no global mesh to export";
+  if (is_vvm_path(path)) {
+    const char* e = m->write_vvm(path.c_str());
+    return e ? e : "";
+  }
+  vv_geometry g{};
+  if (const char* e = m->geometry(max_face(), &g)) return e;
+  return export_polygons(g, path, std::string("mesh ") + m->name);
+}
+
+}  // namespace vvi

@@ -1,0 +1,71 @@
+// One model's life, the same in the viewer and in batch mode: build (or
+// find in the cache) → load a fresh instance → start → step → end → rewind
+// or reload → close. The settings a model is built and loaded with are made
+// here, once, from the command line.
+#pragma once
+
+#include <atomic>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "app/options.hpp"
+#include "build/model_build.hpp"
+#include "runner/session.hpp"
+
+namespace vvi {
+
+build_settings build_settings_for(const options& o, bool force = false);
+session_settings session_settings_for(const options& o);
+
+class model_runner {
+ public:
+  explicit model_runner(const options& o) : o_(o) {}
+
+  //! Translates and compiles, or finds the build in the cache. It does not
+  //! touch the running model, so it may run beside it on another thread.
+  build_result build(bool force) const;
+
+  //! A fresh instance of a plugin: loaded (every global initialised anew),
+  //! started, then stepped `steps` times so a reload comes back to where the
+  //! user was. It replaces the running model once its start worked (the old
+  //! one's close block runs then); when loading or start fail, the running
+  //! model stays and false is returned. A step that fails on the way leaves
+  //! the new model at the step before, with error() set.
+  bool load(const std::string& plugin_path, unsigned steps = 0);
+  //! The same plugin again, from a fresh start.
+  bool rewind(unsigned steps = 0) { return load(plugin_, steps); }
+  bool step();
+  bool end();
+  bool reread();
+  //! Runs the close block and unloads the model.
+  void close();
+
+  session* model() const { return model_.get(); }
+  const std::string& plugin_path() const { return plugin_; }
+  //! The last error (one message naming the .vvp line), or empty.
+  const std::string& error() const { return error_; }
+  void clear_error() { error_.clear(); }
+  const options& opts() const { return o_; }
+
+  //! The longest face orbit drawn or exported: --max-face, else the
+  //! program's proxy.max_face (0: no limit).
+  std::size_t max_face() const;
+  //! The polygons of the chosen global meshes (--mesh: one, several, or by
+  //! default the first); "" or the error. Valid until the next call.
+  std::string geometry(vv_geometry& out) const;
+  //! Writes the chosen meshes to a file (the format by its extension).
+  std::string export_to(const std::string& path) const;
+  std::string export_to(const std::string& path, const std::vector<std::string>& meshes) const;
+
+  //! Set from another thread to end a run-up (load with steps) between steps.
+  std::atomic<bool> cancel{false};
+
+ private:
+  options o_;
+  std::unique_ptr<session> model_;
+  std::string plugin_;
+  std::string error_;
+};
+
+}  // namespace vvi

@@ -1,0 +1,71 @@
+#include "runner/session.hpp"
+
+#include <chrono>
+
+#include "runner/fault_guard.hpp"
+
+namespace vvi {
+
+std::unique_ptr<session> session::load(const std::string& plugin_path, const session_settings& s,
+                                       std::string& error) {
+  std::unique_ptr<plugin> p = plugin::open(plugin_path, error);
+  if (!p) return nullptr;
+  vv_plugin_settings settings{s.model_dir.c_str(), s.seed, s.strict ? 1 : 0};
+  p->configure(&settings);
+  return std::unique_ptr<session>(new session(std::move(p)));
+}
+
+bool session::run(const char* block, plugin::block_fn fn, unsigned step, bool announce) {
+  fault_guard::begin(block, step, announce);
+  const char* e = fn();
+  fault_guard::finish(announce);
+  if (e) {
+    error_ = e;
+    // Always said, even when the message happens to contain the word.
+    error_ += " (in " + (step ? std::string(block) + " " + std::to_string(step) : std::string(block)) + ")";
+    return false;
+  }
+  return true;
+}
+
+bool session::start() { return run("start", plugin_->start); }
+bool session::end() { return run("end", plugin_->end); }
+bool session::reread() { return run("reread", plugin_->reread); }
+// Drawing is not timed (it is not announced): it runs every frame.
+bool session::render_init() { return !has_block("render_init") || run("render_init", plugin_->render_init, 0, false); }
+bool session::render() { return !has_block("render") || run("render", plugin_->render, 0, false); }
+bool session::render_screen() {
+  return !has_block("render_screen") || run("render_screen", plugin_->render_screen, 0, false);
+}
+
+bool session::step() {
+  auto t = std::chrono::steady_clock::now();
+  bool ok = run("step", plugin_->step, steps_ + 1);
+  last_step_ms_ = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t).count();
+  if (ok) ++steps_;
+  return ok;
+}
+
+void session::close() {
+  if (closed_) return;
+  closed_ = true;
+  run("close", plugin_->close);
+}
+
+session::~session() { close(); }
+
+std::vector<const vv_mesh_entry*> session::meshes() const {
+  std::size_t n = 0;
+  const vv_mesh_entry* table = plugin_->meshes(&n);
+  std::vector<const vv_mesh_entry*> out;
+  for (std::size_t i = 0; i < n; ++i) out.push_back(&table[i]);
+  return out;
+}
+
+const vv_mesh_entry* session::mesh(const std::string& name) const {
+  for (const vv_mesh_entry* m : meshes())
+    if (name.empty() || name == m->name) return m;
+  return nullptr;
+}
+
+}  // namespace vvi

@@ -1,0 +1,62 @@
+// A running model: a loaded plugin, its step count and timing, and the
+// last error. Errors never throw out of here: each call says whether it
+// worked and keeps the message (which names the .vvp file and line).
+#pragma once
+
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "runner/plugin.hpp"
+
+namespace vvi {
+
+struct session_settings {
+  std::string model_dir;  // relative paths in the program resolve against it
+  std::uint64_t seed = 0;
+  bool strict = false;    // reading a never-synchronised old state is an error
+};
+
+class session {
+ public:
+  static std::unique_ptr<session> load(const std::string& plugin_path, const session_settings& s,
+                                       std::string& error);
+
+  bool start();
+  bool step();
+  bool end();
+  bool reread();
+  //! The render blocks (call with the GL context current); true when the
+  //! model has no such block.
+  bool render_init();
+  bool render();
+  bool render_screen();
+  //! Runs the close block (once); the plugin stays loaded until destruction.
+  void close();
+  ~session();
+
+  unsigned steps_done() const { return steps_; }
+  double last_step_ms() const { return last_step_ms_; }
+  const std::string& error() const { return error_; }
+
+  std::vector<const vv_mesh_entry*> meshes() const;
+  //! A global mesh by name, or the first one when name is empty.
+  const vv_mesh_entry* mesh(const std::string& name) const;
+  vv::proxy& proxy() const { return *plugin_->proxy(); }
+  plugin& raw() const { return *plugin_; }
+  bool has_block(const char* name) const { return plugin_->has_block(name) != 0; }
+
+ private:
+  explicit session(std::unique_ptr<plugin> p) : plugin_(std::move(p)) {}
+  //! Runs a block as the named activity (runner/fault_guard.hpp).
+  bool run(const char* block, plugin::block_fn fn, unsigned step = 0, bool announce = true);
+
+  std::unique_ptr<plugin> plugin_;
+  unsigned steps_ = 0;
+  double last_step_ms_ = 0;
+  std::string error_;
+  bool closed_ = false;
+};
+
+}  // namespace vvi

@@ -1,0 +1,45 @@
+// Runs the model's code on a thread of its own, one job at a time, so a
+// step that takes long (or never ends) leaves the window drawing and
+// answering. While a job runs the window must not call into the model (no
+// render blocks, no meshes): it draws what it kept from before.
+#pragma once
+
+#include <chrono>
+#include <condition_variable>
+#include <functional>
+#include <mutex>
+#include <string>
+#include <thread>
+
+namespace vvi {
+
+class model_worker {
+ public:
+  model_worker();
+  ~model_worker();
+  model_worker(const model_worker&) = delete;
+  model_worker& operator=(const model_worker&) = delete;
+
+  //! Starts a job; the worker must be idle. `what` says what it does
+  //! ("step 3") for the window to show.
+  void submit(std::function<void()> job, const std::string& what);
+  bool busy() const;
+  //! How long the running job has run.
+  double busy_seconds() const;
+  std::string what() const;
+  //! True once after each job ended.
+  bool take_finished();
+
+ private:
+  void loop();
+
+  mutable std::mutex m_;
+  std::condition_variable wake_;
+  std::function<void()> job_;
+  std::string what_;
+  bool busy_ = false, finished_ = false, quit_ = false;
+  std::chrono::steady_clock::time_point since_;
+  std::thread thread_;
+};
+
+}  // namespace vvi

@@ -1,0 +1,37 @@
+// --script: commands the viewer runs in its live window, one per line, so
+// the interactive viewer can be driven (and tested) without a person.
+//
+//   step N | run | rewind | end | reread | recompile | fit
+//   screenshot FILE.png | window-screenshot FILE.png (with the panel)
+//   export MESH FILE | rotate DX DY | zoom F | wait MS | stop | quit
+//
+// Each command waits for the one before to finish (a step, a build),
+// except `stop`: it ends a step that has run for half a second (as the
+// Stop button does: the model restarts at its last good state).
+//
+// Blank lines and lines starting with # are skipped.
+#pragma once
+
+#include <string>
+#include <vector>
+
+namespace vvi {
+
+struct script_command {
+  enum kind_t {
+    step, run, rewind, end, reread, recompile, fit, screenshot, window_screenshot, export_mesh, rotate, zoom, wait, stop,
+    quit
+  };
+  kind_t kind = step;
+  long count = 1;        // step N, wait MS
+  double a = 0, b = 0;   // rotate DX DY (degrees), zoom F
+  std::string path;      // screenshot, export
+  std::string mesh;      // export
+  int line = 0;
+};
+
+//! The commands of a script; on a bad line, nothing and error =
+//! "file:line: problem".
+std::vector<script_command> parse_script(const std::string& text, const std::string& name, std::string& error);
+
+}  // namespace vvi

@@ -1,0 +1,23 @@
+// The interactive viewer: a GLFW window (OpenGL compatibility profile) with
+// the model, a control panel, mouse and key controls, continuous
+// modelling (recompile and reload when a source file changes) and --script.
+//
+// The window runs in a child process of a small supervisor
+// (viewer/supervised_viewer.cpp): when the model crashes, the supervisor
+// starts the window again where it was, with the crash on the panel.
+#pragma once
+
+#include "app/options.hpp"
+#include "viewer/resume.hpp"
+
+namespace vvi {
+
+//! The viewer under its supervisor: runs until the window closes; the exit
+//! status.
+int run_viewer(const options& o);
+
+//! One viewer process's window, from a fresh start or a resume; the exit
+//! status (viewer_restart_code: start me again).
+int run_viewer_window(const options& o, const viewer_resume& resume);
+
+}  // namespace vvi
