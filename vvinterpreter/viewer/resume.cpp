@@ -35,7 +35,7 @@ void viewer_state::hear(const std::string& line) {
     words >> replay;
   } else if (key == "stopped") {
     words >> stopped_activity;
-    stopped = rest;
+    std::getline(words >> std::ws, stopped);
   }
 }
 

@@ -42,7 +42,7 @@ class viewer_state {
   std::size_t script_pos = 0;
   int screenshots = 0;
   bool replay = true;
-  std::string stopped;           //!< "step 3 after 2.5 s" when the user pressed Stop
+  std::string stopped;           //!< "step 3 was stopped after 2.5 s" when the user pressed Stop
   std::string stopped_activity;  //!< what ran when stopped ("step", "start", "replay", ...)
 };
 

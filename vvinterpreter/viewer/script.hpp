@@ -6,8 +6,9 @@
 //   export MESH FILE | rotate DX DY | zoom F | wait MS | stop | quit
 //
 // Each command waits for the one before to finish (a step, a build),
-// except `stop`: it ends a step that has run for half a second (as the
-// Stop button does: the model restarts at its last good state).
+// except `wait` and `window-screenshot`, which go on beside a running step,
+// and `stop`: it ends a step that has run for half a second (as the Stop
+// button does: the model restarts at its last good state).
 //
 // Blank lines and lines starting with # are skipped.
 #pragma once

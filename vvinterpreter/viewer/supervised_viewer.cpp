@@ -41,8 +41,10 @@ viewer_resume resume_after(const options& o, const viewer_resume& before, const 
   if (!state.trying_plugin.empty() && (what == "loading" || what == "start" || what == "step"))
     r.bad_plugin = state.trying_plugin;
   if (what.rfind("render", 0) == 0) r.no_render_plugin = state.model_plugin;
+  if (!r.replay) r.good_steps = 0;
+  r.note = restart_note(r);
   if (stopped) {
-    r.error = o.model + ": " + state.stopped + ": stopped";
+    r.error = o.model + ": " + state.stopped + "; " + r.note;
     say_error(r.error);
   } else {
     crash_text t = describe_crash(end, o.model);
@@ -50,8 +52,6 @@ viewer_resume resume_after(const options& o, const viewer_resume& before, const 
     std::fflush(stderr);
     r.error = t.panel + (t.stack.empty() ? "" : "\n" + t.stack);
   }
-  if (!r.replay) r.good_steps = 0;
-  r.note = restart_note(r);
   return r;
 }
 

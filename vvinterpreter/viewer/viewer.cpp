@@ -126,6 +126,7 @@ class viewer {
     if (building_) return;
     building_ = true;
     status_ = force ? "recompiling ..." : "compiling ...";
+    say("compiling " + o_.model + " ...");
     // What the files are now: a save during the build is a change after it.
     std::vector<std::string> known = watch_.paths();
     if (known.empty()) known.push_back(o_.model);
@@ -230,6 +231,7 @@ class viewer {
     job_ = nullptr;
     f();
     drawn_since_job_ = false;
+    std::fflush(stdout);  // what the model printed shows now, also through a pipe
   }
 
   // The next thing to run, when the worker is free.
@@ -270,7 +272,7 @@ class viewer {
     std::snprintf(secs, sizeof secs, "%.1f", worker_.busy_seconds());
     std::string what = worker_.what();
     std::string activity = what.rfind("step", 0) == 0 ? "step" : what.rfind("loading", 0) == 0 ? "loading" : what;
-    tell_supervisor("stopped", activity + " " + what + " after " + secs + " s");
+    tell_supervisor("stopped", activity + " " + what + " was stopped after " + secs + " s");
     std::fflush(nullptr);
     _exit(viewer_restart_code);  // the worker may be anywhere: no clean-up
   }
@@ -505,8 +507,11 @@ class viewer {
         tell_supervisor("script", std::to_string(told_script_ = script_pos_));
         stop();
       }
-      if (building_ || busy() || pending_load_ || run_left_ > 0 || rewind_requested_ || end_requested_ ||
-          reread_requested_ || now_seconds() < wait_until_ || !shot_path_.empty() || !window_shot_path_.empty())
+      // Waiting and a picture of the window go on beside a running job.
+      bool beside_job = c.kind == script_command::wait || c.kind == script_command::window_screenshot;
+      if (building_ || (busy() && !beside_job) || pending_load_ || run_left_ > 0 || rewind_requested_ ||
+          end_requested_ || reread_requested_ || now_seconds() < wait_until_ || !shot_path_.empty() ||
+          !window_shot_path_.empty())
         return;
       ++script_pos_;
       switch (c.kind) {

@@ -1,0 +1,165 @@
+// A model's life in batch mode, as the modelling loop needs it to be
+// trustworthy: what runs is what the files say (a header edit rebuilds),
+// a crash or an endless step ends the run with the .vvp line and the step
+// (and keeps everything the model printed), an exception in a global
+// initialiser is reported, --end runs the end block, --mesh A,B exports
+// the union, --debug builds for gdb, and the compiler's messages carry .vvp
+// columns. Models live in fault_models/.
+#include "viewer_harness.hpp"
+
+namespace {
+
+const std::string fault_models = VV_TESTS_DIR "/fault_models/";
+
+test_run::result batch(const std::vector<std::string>& args) {
+  std::vector<std::string> argv = {"--batch"};
+  argv.insert(argv.end(), args.begin(), args.end());
+  return test_run::run(test_run::interpreter(argv), 280);
+}
+
+std::vector<std::string> lines_of(const std::string& text) {
+  std::vector<std::string> out;
+  std::istringstream in(text);
+  for (std::string l; std::getline(in, l);) out.push_back(l);
+  return out;
+}
+
+// Regression (issue 8, defect 1): the cache entry was named by the
+// translated C++, which a header edit leaves unchanged, so the fresh build
+// lost the rename to the old one and the old code ran.
+TEST(Lifecycle, AHeaderEditRebuildsAndRunsTheNewCode) {
+  std::string d = fresh_dir("header_edit");
+  fs::copy_file(fault_models + "with_header.vvp", d + "model.vvp");
+  write_text(d + "rate.h", "const int rate = 1;\n");
+  test_run::result first = batch({"--quiet", d + "model.vvp"});
+  ASSERT_EQ(first.status, 0) << report(first);
+  EXPECT_EQ(first.out, "rate 1\n");
+  write_text(d + "rate.h", "const int rate = 22;  // edited\n");
+  test_run::result second = batch({d + "model.vvp"});
+  ASSERT_EQ(second.status, 0) << report(second);
+  EXPECT_TRUE(has(second.out, "compiled in")) << "the edited header was not compiled\n" << report(second);
+  EXPECT_TRUE(has(second.out, "rate 22\n")) << report(second);
+  // Unchanged since: the cache answers, with the new build.
+  test_run::result third = batch({d + "model.vvp"});
+  EXPECT_TRUE(has(third.out, "found in the cache")) << report(third);
+  EXPECT_TRUE(has(third.out, "rate 22\n")) << report(third);
+}
+
+// Regression (defect 5): a null pointer in the model's own code killed the
+// interpreter with "Segmentation fault", and output still in stdio's buffer
+// (stdout is a pipe here) was lost.
+TEST(Lifecycle, ACrashNamesTheLineAndTheStepAndKeepsTheOutput) {
+  test_run::result r = batch({"--quiet", "--steps", "3", fault_models + "crash_in_step2.vvp"});
+  ASSERT_FALSE(r.timed_out) << report(r);
+  EXPECT_NE(r.status, 0) << report(r);
+  std::vector<std::string> err = lines_of(r.err);
+  ASSERT_FALSE(err.empty()) << report(r);
+  EXPECT_EQ(err[0], "vvinterpreter: " + fault_models + "crash_in_step2.vvp:23: crashed with SIGSEGV in step 2")
+      << report(r);
+  // The call stack as .vvp lines follows.
+  ASSERT_GE(err.size(), 2u) << report(r);
+  EXPECT_EQ(err[1], "  " + fault_models + "crash_in_step2.vvp:23 in the step block") << report(r);
+  EXPECT_EQ(r.out, "step 1\npartial line of step 1\nstep 2\npartial line of step 2") << report(r);
+}
+
+// Regression (defect 4): an endless step froze everything; now
+// --step-timeout ends it with a message naming the step.
+TEST(Lifecycle, AStepPastTheTimeLimitEndsTheRun) {
+  test_run::result r =
+      batch({"--quiet", "--steps", "3", "--step-timeout", "1.5", fault_models + "endless_step2.vvp"});
+  ASSERT_FALSE(r.timed_out) << "the endless step was not ended\n" << report(r);
+  EXPECT_NE(r.status, 0) << report(r);
+  EXPECT_EQ(r.err, "vvinterpreter: " + fault_models + "endless_step2.vvp: step 2 ran longer than 1.5 s\n")
+      << report(r);
+}
+
+TEST(Lifecycle, StepTimeoutNeedsAPositiveNumber) {
+  for (const char* bad : {"0", "-1", "soon", ""}) {
+    test_run::result r = batch({"--step-timeout", bad, fault_models + "counter.vvp"});
+    EXPECT_EQ(r.status, 2) << bad << "\n" << report(r);
+    EXPECT_TRUE(has(r.err, "--step-timeout needs a number of seconds")) << report(r);
+  }
+}
+
+// Regression (defect 6): an exception thrown while the model's globals are
+// initialised (inside dlopen) aborted the interpreter.
+TEST(Lifecycle, AnExceptionInAGlobalInitialiserIsReported) {
+  test_run::result r = batch({"--quiet", "--steps", "1", fault_models + "global_throws.vvp"});
+  ASSERT_FALSE(r.timed_out) << report(r);
+  EXPECT_NE(r.status, 0) << report(r);
+  std::vector<std::string> err = lines_of(r.err);
+  ASSERT_GE(err.size(), 3u) << report(r);
+  EXPECT_EQ(err[0], "vvinterpreter: " + fault_models +
+                        "global_throws.vvp:7: crashed with an uncaught exception (cannot parse rates.txt) while "
+                        "loading the model (in a global initialiser)")
+      << report(r);
+  EXPECT_EQ(err[1], "  " + fault_models + "global_throws.vvp:7 in rate_from_file()") << report(r);
+  EXPECT_EQ(err[2], "  " + fault_models + "global_throws.vvp:9 in a global initialiser") << report(r);
+}
+
+// Regression (defect 8): batch mode never ran the end block.
+TEST(Lifecycle, EndRunsTheEndBlockAfterTheLastStep) {
+  test_run::result without = batch({"--quiet", "--steps", "4", fault_models + "end_block.vvp"});
+  EXPECT_EQ(without.status, 0) << report(without);
+  EXPECT_EQ(without.out, "");
+  test_run::result with = batch({"--quiet", "--steps", "4", "--end", fault_models + "end_block.vvp"});
+  EXPECT_EQ(with.status, 0) << report(with);
+  EXPECT_EQ(with.out, "summary: 4 steps\n");
+}
+
+// Regression (defect 8): only one global mesh could be exported.
+TEST(Lifecycle, SeveralMeshesExportAsTheirUnion) {
+  std::string d = fresh_dir("mesh_union");
+  std::string two = VV_TESTS_DIR "/models/two_meshes.vvp";
+  test_run::result r = batch({"--quiet", "--mesh", "Fan,Pyramid", "--export", d + "both.vvm", two});
+  ASSERT_EQ(r.status, 0) << report(r);
+  EXPECT_EQ(vvm_vertex_count(d + "both.vvm"), 7 + 6);
+  // As polygons: the fan's six triangles (its hexagonal boundary is a hole
+  // with --max-face 3) and the pyramid's eight.
+  r = batch({"--quiet", "--mesh", "Fan,Pyramid", "--max-face", "3", "--export", d + "both.obj", two});
+  ASSERT_EQ(r.status, 0) << report(r);
+  std::string obj = slurp(d + "both.obj");
+  long v = 0, f = 0;
+  for (const std::string& l : lines_of(obj)) v += l.rfind("v ", 0) == 0, f += l.rfind("f ", 0) == 0;
+  EXPECT_EQ(v, 13);
+  EXPECT_EQ(f, 6 + 8);
+  // A name that is not a global mesh is an error naming the ones there are.
+  r = batch({"--quiet", "--mesh", "Fan,Walls", "--export", d + "bad.vvm", two});
+  EXPECT_NE(r.status, 0);
+  EXPECT_EQ(r.err, "vvinterpreter: " + two + ": the model has no global mesh named Walls (it has Fan, Pyramid)\n");
+  EXPECT_FALSE(fs::exists(d + "bad.vvm"));
+  EXPECT_EQ(batch({"--mesh", "Fan,", two}).status, 2);
+}
+
+// Defect 7: models were built without debug information. --debug builds
+// with -g -O0 and keeps the generated C++ beside the plugin; normal builds
+// carry line tables (crash reports use them).
+TEST(Lifecycle, DebugBuildsForGdbAndKeepsTheGeneratedCpp) {
+  test_run::result r = test_run::run(test_run::interpreter({"--compile-only", "--debug", fault_models + "counter.vvp"}));
+  ASSERT_EQ(r.status, 0) << report(r);
+  std::vector<std::string> out = lines_of(r.out);
+  ASSERT_FALSE(out.empty());
+  fs::path plugin = out.back();
+  ASSERT_TRUE(fs::exists(plugin)) << report(r);
+  std::string command = slurp((plugin.parent_path() / "command").string());
+  EXPECT_TRUE(has(command, " -g ") && has(command, " -O0 ")) << command;
+  EXPECT_TRUE(has(slurp((plugin.parent_path() / "model.cpp").string()), "#line ")) << "no generated C++ beside it";
+  r = test_run::run(test_run::interpreter({"--compile-only", fault_models + "counter.vvp"}));
+  ASSERT_EQ(r.status, 0) << report(r);
+  command = slurp((fs::path(lines_of(r.out).back()).parent_path() / "command").string());
+  EXPECT_TRUE(has(command, " -g1 ") && !has(command, " -O0 ")) << command;
+}
+
+// The compiler's error about a .vvp line shows the .vvp column (not the
+// column in the generated line) and the .vvp line with a caret under it.
+TEST(Lifecycle, CompilerErrorsPointIntoTheVvpLine) {
+  std::string model = VV_TESTS_DIR "/models/compile_error.vvp";
+  test_run::result r = test_run::run(test_run::interpreter({"--compile-only", model}));
+  EXPECT_NE(r.status, 0);
+  // Line 11 is "  std::string name = v$pos;": the compiler points at pos.
+  EXPECT_TRUE(has(r.out, model + ":11:24: error: conversion from")) << report(r);
+  EXPECT_TRUE(has(r.out, "\n    std::string name = v$pos;\n                         ^\n")) << report(r);
+  EXPECT_EQ(r.err.rfind("vvinterpreter: " + model + ":11:24: error: ", 0), 0u) << report(r);
+}
+
+}  // namespace
