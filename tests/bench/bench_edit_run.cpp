@@ -1,7 +1,10 @@
 // Continuous modelling speed: from a saved .vvp to its running model
 // (translate, compile, load, start), as `vvinterpreter --batch` does it.
 //
-//   bench_edit_run [--runs R] [MODEL.vvp ...]      (default: the examples)
+//   bench_edit_run [--runs R] [--interpreter PATH] [MODEL.vvp ...]   (default: the examples)
+//
+// --interpreter times another build of vvinterpreter (to compare before and
+// after a change).
 //
 // For each model, in a scratch copy with a fresh cache:
 //   first   — nothing cached, not even the precompiled vvlib header;
@@ -24,9 +27,11 @@ namespace fs = std::filesystem;
 
 namespace {
 
+std::string interpreter = VV_INTERPRETER;
+
 double timed_run(const std::string& model, const std::string& cache, bool& ok) {
   auto t = std::chrono::steady_clock::now();
-  test_run::result r = test_run::run({VV_INTERPRETER, "--batch", "--quiet", "--cache", cache, model}, 300);
+  test_run::result r = test_run::run({interpreter, "--batch", "--quiet", "--cache", cache, model}, 300);
   ok = ok && r.status == 0;
   if (r.status != 0) std::fprintf(stderr, "%s", r.err.c_str());
   return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t).count();
@@ -45,6 +50,7 @@ int main(int argc, char** argv) {
   for (int i = 1; i < argc; ++i) {
     std::string a = argv[i];
     if (a == "--runs" && i + 1 < argc) runs = std::max(1, std::atoi(argv[++i]));
+    else if (a == "--interpreter" && i + 1 < argc) interpreter = argv[++i];
     else models.push_back(a);
   }
   if (models.empty()) {

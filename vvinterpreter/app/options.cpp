@@ -40,7 +40,9 @@ const char* usage_text =
     "  --compile-only     translate and compile, then exit\n"
     "  --cache DIR        compiled models (default $VV_CACHE_DIR or ~/.cache/vv)\n"
     "  --opt N            optimisation level for models (0-3, default 1)\n"
-    "  --debug            build the model with -g -O0, for gdb (see docs/interpreter.md)\n"
+    "  --debug            build the model with -g -O0 and run it in this process, for gdb\n"
+    "  --in-process       batch: run the model in this process, unsupervised (a crash\n"
+    "                     then ends the interpreter; for profilers and debuggers)\n"
     "  --quiet            no progress or summary lines\n"
     "  --help, --version\n";
 
@@ -105,6 +107,8 @@ parse_result parse_options(int argc, const char* const* argv) {
       o.end_block = true;
     } else if (a == "--debug") {
       o.debug = true;
+    } else if (a == "--in-process") {
+      o.in_process = true;
     } else if (a == "--step-timeout") {
       char* end = nullptr;
       if (!value(v)) return fail("--step-timeout needs a number of seconds");

@@ -16,7 +16,8 @@ struct options {
   std::vector<std::string> meshes;  // --mesh NAME[,NAME...] (default: the first global mesh)
   bool end_block = false;     // --end: run the end block after the last step (batch)
   double step_timeout = 0;    // --step-timeout SECONDS (batch; 0: no limit)
-  bool debug = false;         // --debug: build the model with -g -O0
+  bool debug = false;         // --debug: build the model with -g -O0 (batch: in this process)
+  bool in_process = false;    // --in-process: batch without the supervising process
   std::size_t max_face = 0;   // --max-face N (0: no limit)
   std::string screenshot;     // --screenshot FILE.png
   int width = 800, height = 600;  // --size WxH

@@ -119,19 +119,22 @@ int run_compile_only(const options& o) {
 int run_batch(const options& o) {
   // The model runs in a child process: a crash or a step past its time
   // limit ends the run with a message, not with this process.
+  // --debug, --in-process: a debugger or profiler is the supervisor, and
+  // it must see the model in this process.
+  if (o.debug || o.in_process) return run_model_headless(o);
   supervision s;
   s.activity_timeout = o.step_timeout;
   child_end end = run_supervised([&] { return run_model_headless(o); }, s);
-  switch (end.kind) {
-    case child_end::exited: return end.exit_code;
-    case child_end::timed_out: return fail(describe_timeout(end, o.model, o.step_timeout));
-    case child_end::crashed: {
-      crash_text t = describe_crash(end, o.model);
-      std::fprintf(stderr, "vvinterpreter: %s\n%s", t.line.c_str(), t.stack.c_str());
-      return 1;
-    }
+  int status = end.exit_code;
+  if (end.kind == child_end::timed_out) {
+    status = fail(describe_timeout(end, o.model, o.step_timeout));
+  } else if (end.kind == child_end::crashed) {
+    crash_text t = describe_crash(end, o.model);
+    std::fprintf(stderr, "vvinterpreter: %s\n%s", t.line.c_str(), t.stack.c_str());
+    status = 1;
   }
-  return 1;
+  remove_module_copies(end);
+  return status;
 }
 
 }  // namespace vvi

@@ -126,7 +126,7 @@ void on_fatal(int sig, siginfo_t*, void* context) {
   if (report >= 0) {
     line l;
     (l << "crash " << signal_name(sig)).send();
-    (l << "activity " << activity << " ").number(activity_step, 10).send();
+    if (activity[0]) (l << "activity " << activity << " ").number(activity_step, 10).send();
     if (exception_text[0]) (l << "exception " << exception_text).send();
     (l << "pc ").number(fault_pc(context), 16).send();
     void* frames[64];
@@ -169,6 +169,10 @@ void copy_text(char* to, std::size_t size, const char* from) {
 void prepare_thread() {
   static thread_local void* stack = nullptr;
   if (stack) return;
+  // A sanitizer runtime gives each thread an alternate stack of its own
+  // (and frees it at thread exit): keep it.
+  stack_t current{};
+  if (sigaltstack(nullptr, &current) == 0 && !(current.ss_flags & SS_DISABLE) && current.ss_size >= (1 << 14)) return;
   std::size_t size = 1 << 16;
   stack = std::malloc(size);  // lives as long as the thread (and past it: harmless)
   stack_t ss{};

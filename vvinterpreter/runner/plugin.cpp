@@ -1,7 +1,10 @@
 #include "runner/plugin.hpp"
 
 #include <dlfcn.h>
+#include <signal.h>
 #include <unistd.h>
+
+#include <cerrno>
 
 #include <atomic>
 #include <cstdlib>
@@ -13,15 +16,34 @@ namespace vvi {
 
 namespace {
 
+std::string temporary_dir() {
+  const char* tmp = std::getenv("TMPDIR");
+  return tmp && *tmp ? tmp : "/tmp";
+}
+
+// Copies left by processes that were killed ("vv-model-PID-N.so").
+void remove_stale_copies(const std::string& dir) {
+  std::error_code ec;
+  for (auto it = std::filesystem::directory_iterator(dir, ec); !ec && it != std::filesystem::directory_iterator();
+       it.increment(ec)) {
+    std::string name = it->path().filename().string();
+    if (name.rfind("vv-model-", 0) != 0) continue;
+    long pid = std::strtol(name.c_str() + 9, nullptr, 10);
+    std::error_code rm;
+    if (pid > 0 && kill(static_cast<pid_t>(pid), 0) != 0 && errno == ESRCH) std::filesystem::remove(it->path(), rm);
+  }
+}
+
 // Every load gets its own copy of the plugin under a name never used
 // before: the dynamic loader hands back an already loaded object when the
 // name (or the file) is the same, and then the model's globals would not
 // be initialised again (a reload of an unchanged build, a rewind while the
-// old instance is still loaded).
+// old instance is still loaded). The copy stays while the model is loaded,
+// so a debugger and the crash report can read its line tables.
 std::string private_copy(const std::string& path, std::string& error) {
   static std::atomic<unsigned> loads{0};
-  const char* tmp = std::getenv("TMPDIR");
-  std::string dir = tmp && *tmp ? tmp : "/tmp";
+  std::string dir = temporary_dir();
+  if (loads == 0) remove_stale_copies(dir);
   std::string copy = dir + "/vv-model-" + std::to_string(getpid()) + "-" + std::to_string(++loads) + ".so";
   std::error_code ec;
   std::filesystem::copy_file(path, copy, std::filesystem::copy_options::overwrite_existing, ec);
@@ -49,7 +71,7 @@ std::unique_ptr<plugin> plugin::open(const std::string& path, std::string& error
   fault_guard::begin("loading");
   p->handle_ = dlopen(copy.c_str(), RTLD_NOW | RTLD_LOCAL);
   fault_guard::finish();
-  unlink(copy.c_str());  // the mapping stays; nothing is left behind
+  p->copy_ = copy;
   if (!p->handle_) {
     std::string why = dlerror_text();
     // The loader names the private copy; the user knows the plugin.
@@ -97,6 +119,7 @@ std::unique_ptr<plugin> plugin::open(const std::string& path, std::string& error
 
 plugin::~plugin() {
   if (handle_) dlclose(handle_);
+  if (!copy_.empty()) unlink(copy_.c_str());
 }
 
 }  // namespace vvi

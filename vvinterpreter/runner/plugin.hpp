@@ -35,6 +35,7 @@ class plugin {
   plugin() = default;
   void* handle_ = nullptr;
   std::string path_;
+  std::string copy_;  // the private copy that is loaded (removed on unload)
 };
 
 }  // namespace vvi

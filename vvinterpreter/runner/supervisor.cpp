@@ -42,9 +42,11 @@ class report_reader {
     std::size_t space = l.find(' ');
     std::string key = l.substr(0, space), rest = space == std::string::npos ? "" : l.substr(space + 1);
     if (key == "begin" || key == "activity") {
-      std::istringstream words(rest);
+      // "WHAT STEP"
+      std::size_t last = rest.rfind(' ');
       child_activity a;
-      words >> a.what >> a.step;
+      a.what = rest.substr(0, last == std::string::npos ? rest.size() : last);
+      if (last != std::string::npos) a.step = static_cast<unsigned>(std::strtoul(rest.c_str() + last + 1, nullptr, 10));
       end_.activity = a;
       if (key == "begin") since_ = clock_type::now();
     } else if (key == "done") {
@@ -137,6 +139,10 @@ child_end run_supervised(const std::function<int()>& child, const supervision& s
     end.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : 1;
   }
   return end;
+}
+
+void remove_module_copies(const child_end& end) {
+  for (const auto& [copy, original] : end.modules) unlink(copy.c_str());
 }
 
 }  // namespace vvi

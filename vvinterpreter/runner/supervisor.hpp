@@ -49,4 +49,8 @@ struct supervision {
 //! to this process) and waits for it to end. child returns the exit code.
 child_end run_supervised(const std::function<int()>& child, const supervision& s);
 
+//! Removes the private copies of plugins a child that died had loaded
+//! (runner/plugin.cpp), once its crash has been described.
+void remove_module_copies(const child_end& end);
+
 }  // namespace vvi

@@ -15,6 +15,8 @@ void viewer_state::hear(const std::string& line) {
   std::istringstream words(rest);
   if (key == "up") {
     up = true;
+  } else if (key == "quitting") {
+    quitting = true;
   } else if (key == "model") {
     words >> model_steps;
     std::getline(words >> std::ws, model_plugin);

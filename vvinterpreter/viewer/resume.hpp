@@ -35,6 +35,7 @@ class viewer_state {
   void hear(const std::string& line);
 
   bool up = false;               //!< the window opened
+  bool quitting = false;         //!< the user closed it: no restart
   std::string model_plugin, trying_plugin;
   unsigned model_steps = 0;
   std::string camera;

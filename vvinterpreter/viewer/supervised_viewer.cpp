@@ -73,10 +73,14 @@ int run_viewer(const options& o) {
     supervision s;
     s.on_line = [&](const std::string& line) { state.hear(line); };
     child_end end = run_supervised([&] { return run_viewer_window(o, resume); }, s);
-    if (end.kind == child_end::exited && end.exit_code != viewer_restart_code) return end.exit_code;
-    if (!state.up) {  // the window itself cannot come up: nothing to go back to
+    if (end.kind == child_end::exited && end.exit_code != viewer_restart_code) {
+      remove_module_copies(end);
+      return end.exit_code;
+    }
+    if (!state.up || state.quitting) {  // nothing to go back to
       crash_text t = describe_crash(end, o.model);
-      say_error("the viewer could not start: " + t.line);
+      say_error((state.up ? "the viewer crashed while closing: " : "the viewer could not start: ") + t.line);
+      remove_module_copies(end);
       return 1;
     }
     // A fault in the viewer's own code would bring it down again at once:
@@ -84,9 +88,11 @@ int run_viewer(const options& o) {
     restarts.push_back(clock::now());
     if (restarts.size() >= 5 && clock::now() - restarts[restarts.size() - 5] < std::chrono::seconds(10)) {
       say_error("the viewer crashed 5 times within 10 s; giving up");
+      remove_module_copies(end);
       return 1;
     }
     resume = resume_after(o, resume, state, end);
+    remove_module_copies(end);
   }
 }
 

@@ -61,6 +61,7 @@ class viewer {
     tell_supervisor("up", "");
     start_build(false);
     while (!glfwWindowShouldClose(window_)) frame();
+    tell_supervisor("quitting", "");  // whatever happens now, no restart
     if (busy()) {  // closed while the model runs: it cannot be closed cleanly
       std::fflush(nullptr);
       _exit(0);
