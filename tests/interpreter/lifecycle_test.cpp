@@ -131,6 +131,17 @@ TEST(Lifecycle, SeveralMeshesExportAsTheirUnion) {
   EXPECT_EQ(batch({"--mesh", "Fan,", two}).status, 2);
 }
 
+// Issue 9, item 19: a screenshot of a mesh without positions was a blank
+// picture without a word.
+TEST(Lifecycle, AScreenshotOfAMeshWithoutPositionsIsAnError) {
+  std::string d = fresh_dir("no_pos_shot");
+  test_run::result r = batch({"--quiet", "--screenshot", d + "blank.png", fault_models + "end_block.vvp"});
+  EXPECT_NE(r.status, 0) << report(r);
+  EXPECT_EQ(r.err, "vvinterpreter: " + d + "blank.png: nothing to draw: the vertices of the model's mesh have no "
+                   "'pos' property (give them one, or draw them in a render block)\n");
+  EXPECT_FALSE(fs::exists(d + "blank.png"));
+}
+
 // Defect 7: models were built without debug information. --debug builds
 // with -g -O0 and keeps the generated C++ beside the plugin; normal builds
 // carry line tables (crash reports use them).

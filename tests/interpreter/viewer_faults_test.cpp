@@ -85,7 +85,8 @@ TEST(ViewerReload, ASaveDuringABuildIsBuiltAfterIt) {
   write_text(d + "s.txt", script({"wait 1000", "quit"}));
   live_viewer v({"--script", d + "s.txt", model});
   ASSERT_TRUE(v.started());
-  // The viewer says when it starts compiling; the save lands during it.
+  // The viewer says when it has read the sources and starts compiling; the
+  // save lands during the compile.
   ASSERT_TRUE(v.wait_for_out("compiling " + model, 60)) << v.out << v.err;
   replace_file(model, version(2) + "// saved while the first build ran\n");
   ASSERT_TRUE(v.wait_for_out("version 1", viewer_timeout)) << v.out << v.err;

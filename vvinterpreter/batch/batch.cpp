@@ -57,6 +57,9 @@ std::string screenshot(const options& o, model_runner& runner) {
   vv_geometry g{};
   error = runner.geometry(g);
   if (!error.empty()) return error;
+  if (!g.positions && !(model && model->has_block("render")))
+    return o.screenshot + ": nothing to draw: the vertices of the model's mesh have no 'pos' property "
+                          "(give them one, or draw them in a render block)";
   drawing.update(g);
   camera cam;
   cam.fit(view_box(model, &drawing));

@@ -236,6 +236,7 @@ build_result build_model(const std::string& path, const build_settings& s) {
     }
   }
 
+  if (s.compiling) s.compiling();
   auto t1 = std::chrono::steady_clock::now();
   std::string pch_error;
   std::string pch = precompiled_header_dir(s, include, stamp, pch_error);

@@ -4,6 +4,7 @@
 // that did not change starts without compiling.
 #pragma once
 
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -14,6 +15,9 @@ struct build_settings {
   int optimization = 1;   // -O level for models
   bool debug = false;     // -g -O0, for gdb (the generated C++ stays in the cache entry)
   bool force = false;     // compile even when a cached plugin exists
+  //! Called when the sources have been read and the compiler is about to
+  //! start (not for a build found in the cache).
+  std::function<void()> compiling;
 };
 
 struct build_result {

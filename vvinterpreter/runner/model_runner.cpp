@@ -23,7 +23,11 @@ session_settings session_settings_for(const options& o) {
   return s;
 }
 
-build_result model_runner::build(bool force) const { return build_model(o_.model, build_settings_for(o_, force)); }
+build_result model_runner::build(bool force, std::function<void()> compiling) const {
+  build_settings s = build_settings_for(o_, force);
+  s.compiling = std::move(compiling);
+  return build_model(o_.model, s);
+}
 
 bool model_runner::load(const std::string& plugin_path, unsigned steps) {
   std::string error;

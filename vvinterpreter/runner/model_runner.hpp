@@ -5,6 +5,7 @@
 #pragma once
 
 #include <atomic>
+#include <functional>
 #include <memory>
 #include <string>
 #include <vector>
@@ -24,7 +25,7 @@ class model_runner {
 
   //! Translates and compiles, or finds the build in the cache. It does not
   //! touch the running model, so it may run beside it on another thread.
-  build_result build(bool force) const;
+  build_result build(bool force, std::function<void()> compiling = {}) const;
 
   //! A fresh instance of a plugin: loaded (every global initialised anew),
   //! started, then stepped `steps` times so a reload comes back to where the

@@ -3,6 +3,7 @@
 #include <fcntl.h>
 #include <poll.h>
 #include <signal.h>
+#include <sys/prctl.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -94,6 +95,8 @@ child_end run_supervised(const std::function<int()>& child, const supervision& s
     return end;
   }
   if (pid == 0) {
+    // The child goes when its supervisor goes (SIGTERM to the interpreter).
+    prctl(PR_SET_PDEATHSIG, SIGTERM);
     close(fds[0]);
     fault_guard::install(fds[1]);
     int code = child();

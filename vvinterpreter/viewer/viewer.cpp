@@ -127,13 +127,19 @@ class viewer {
     if (building_) return;
     building_ = true;
     status_ = force ? "recompiling ..." : "compiling ...";
-    say("compiling " + o_.model + " ...");
     // What the files are now: a save during the build is a change after it.
     std::vector<std::string> known = watch_.paths();
     if (known.empty()) known.push_back(o_.model);
     stamps_before_build_ = watch_.stamps_of(known);
     const model_runner* runner = &runner_;
-    build_ = std::async(std::launch::async, [runner, force] { return runner->build(force); });
+    std::string model = o_.model;
+    // Said once the sources are read: an edit after this line is one the
+    // build does not have.
+    auto compiling = [model] {
+      std::printf("compiling %s ...\n", model.c_str());
+      std::fflush(stdout);
+    };
+    build_ = std::async(std::launch::async, [runner, force, compiling] { return runner->build(force, compiling); });
   }
 
   void finish_build() {
