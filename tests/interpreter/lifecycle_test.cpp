@@ -142,6 +142,38 @@ TEST(Lifecycle, AScreenshotOfAMeshWithoutPositionsIsAnError) {
   EXPECT_FALSE(fs::exists(d + "blank.png"));
 }
 
+// Issue 9, item 22: SIGTERM during an export left a temporary of tens of
+// MB beside the target. Now the run ends, the temporary goes, and the
+// previous file (none here) is untouched.
+TEST(Lifecycle, SigtermDuringAnExportLeavesNoTemporary) {
+  std::string d = fresh_dir("sigterm_export");
+  std::string target = d + "big.obj", temporary = target + ".vvtmp.obj";
+  // Loop to 2,097,152 triangles: the OBJ takes a while to write.
+  std::vector<std::string> argv =
+      test_run::interpreter({"--batch", "--quiet", "--steps", "9", "--export", target, VV_SOURCE_DIR "/examples/loop.vvp"});
+  pid_t pid = fork();
+  if (pid == 0) {
+    std::vector<char*> a;
+    for (const std::string& s : argv) a.push_back(const_cast<char*>(s.c_str()));
+    a.push_back(nullptr);
+    execv(a[0], a.data());
+    _exit(127);
+  }
+  ASSERT_GT(pid, 0);
+  auto until = std::chrono::steady_clock::now() + std::chrono::seconds(240);
+  bool writing = false;
+  while (!(writing = fs::exists(temporary)) && std::chrono::steady_clock::now() < until &&
+         waitpid(pid, nullptr, WNOHANG) == 0)
+    usleep(2000);
+  ASSERT_TRUE(writing) << "the export was never seen being written";
+  kill(pid, SIGTERM);
+  int status = 0;
+  waitpid(pid, &status, 0);
+  EXPECT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 128 + SIGTERM) << status;
+  EXPECT_FALSE(fs::exists(temporary));
+  EXPECT_FALSE(fs::exists(target));
+}
+
 // Defect 7: models were built without debug information. --debug builds
 // with -g -O0 and keeps the generated C++ beside the plugin; normal builds
 // carry line tables (crash reports use them).

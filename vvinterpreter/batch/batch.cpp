@@ -2,7 +2,10 @@
 
 #include <chrono>
 #include <cstdio>
+#include <string.h>
 #include <unistd.h>
+
+#include <vv/io/files.hpp>
 
 #include "render/image.hpp"
 #include "render/offscreen.hpp"
@@ -105,6 +108,13 @@ int run_model_headless(const options& o) {
   return 0;
 }
 
+// The temporaries the export and the screenshot are written to before
+// they are renamed into place.
+void remove_temporaries(const options& o) {
+  for (const std::string& target : {o.export_path, o.screenshot})
+    if (!target.empty()) std::remove(vv::io::temporary_beside(target).c_str());
+}
+
 }  // namespace
 
 int run_compile_only(const options& o) {
@@ -125,11 +135,18 @@ int run_batch(const options& o) {
   // --debug, --in-process: a debugger or profiler is the supervisor, and
   // it must see the model in this process.
   if (o.debug || o.in_process) return run_model_headless(o);
+  // Temporaries of a run that was killed before: they are ours by name.
+  remove_temporaries(o);
   supervision s;
   s.activity_timeout = o.step_timeout;
   child_end end = run_supervised([&] { return run_model_headless(o); }, s);
   int status = end.exit_code;
-  if (end.kind == child_end::timed_out) {
+  if (end.kind == child_end::interrupted) {
+    remove_temporaries(o);
+    const char* name = sigabbrev_np(end.signal);
+    fail(std::string("interrupted (SIG") + (name ? name : "?") + "); the files being written were removed");
+    status = 128 + end.signal;
+  } else if (end.kind == child_end::timed_out) {
     status = fail(describe_timeout(end, o.model, o.step_timeout));
   } else if (end.kind == child_end::crashed) {
     crash_text t = describe_crash(end, o.model);

@@ -21,6 +21,29 @@ namespace {
 
 using clock_type = std::chrono::steady_clock;
 
+volatile sig_atomic_t stop_signal = 0;
+void on_stop_signal(int sig) { stop_signal = sig; }
+
+// While a child runs, SIGTERM, SIGINT and SIGHUP end the child first, so
+// it leaves nothing behind and this process can clean up after it.
+class stop_signals {
+ public:
+  stop_signals() {
+    stop_signal = 0;
+    struct sigaction sa {};
+    sa.sa_handler = on_stop_signal;
+    sigemptyset(&sa.sa_mask);
+    for (int i = 0; i < 3; ++i) sigaction(signals_[i], &sa, &old_[i]);
+  }
+  ~stop_signals() {
+    for (int i = 0; i < 3; ++i) sigaction(signals_[i], &old_[i], nullptr);
+  }
+
+ private:
+  const int signals_[3] = {SIGTERM, SIGINT, SIGHUP};
+  struct sigaction old_[3];
+};
+
 // Reads the protocol of runner/fault_guard.cpp, one line at a time.
 class report_reader {
  public:
@@ -105,8 +128,13 @@ child_end run_supervised(const std::function<int()>& child, const supervision& s
   }
   close(fds[1]);
   report_reader reader(end, s);
+  stop_signals stops;
   bool killed_for_time = false;
   for (;;) {
+    if (stop_signal) {
+      kill(pid, SIGKILL);
+      break;
+    }
     int wait_ms = -1;
     if (s.activity_timeout > 0 && reader.busy()) {
       double left = s.activity_timeout - reader.busy_seconds();
@@ -132,7 +160,10 @@ child_end run_supervised(const std::function<int()>& child, const supervision& s
   int status = 0;
   while (waitpid(pid, &status, 0) < 0 && errno == EINTR) {
   }
-  if (killed_for_time) {
+  if (stop_signal) {
+    end.kind = child_end::interrupted;
+    end.signal = stop_signal;
+  } else if (killed_for_time) {
     end.kind = child_end::timed_out;
   } else if (WIFSIGNALED(status)) {
     end.kind = child_end::crashed;

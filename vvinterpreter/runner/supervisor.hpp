@@ -29,7 +29,9 @@ struct child_activity {
 };
 
 struct child_end {
-  enum kind_t { exited, crashed, timed_out } kind = exited;
+  //! interrupted: this process got SIGTERM, SIGINT or SIGHUP (in `signal`)
+  //! and ended the child.
+  enum kind_t { exited, crashed, timed_out, interrupted } kind = exited;
   int exit_code = 0;       //!< exited
   int signal = 0;          //!< crashed: the signal that ended it
   crash_info crash;        //!< crashed

@@ -77,6 +77,10 @@ int run_viewer(const options& o) {
       remove_module_copies(end);
       return end.exit_code;
     }
+    if (end.kind == child_end::interrupted) {  // SIGTERM, Ctrl-C: the window is gone
+      remove_module_copies(end);
+      return 128 + end.signal;
+    }
     if (!state.up || state.quitting) {  // nothing to go back to
       crash_text t = describe_crash(end, o.model);
       say_error((state.up ? "the viewer crashed while closing: " : "the viewer could not start: ") + t.line);
