@@ -174,6 +174,18 @@ TEST(Lifecycle, SigtermDuringAnExportLeavesNoTemporary) {
   EXPECT_FALSE(fs::exists(target));
 }
 
+// Issue 9, item 23: "(in start)" was left out whenever the message held the
+// word "start" (here, in the file's name).
+TEST(Lifecycle, AnErrorAlwaysNamesItsBlock) {
+  test_run::result r = batch({"--quiet", fault_models + "reads_restart.vvp"});
+  EXPECT_NE(r.status, 0) << report(r);
+  std::vector<std::string> err = lines_of(r.err);
+  ASSERT_EQ(err.size(), 1u) << report(r);
+  EXPECT_EQ(err[0].rfind("vvinterpreter: " + fault_models + "reads_restart.vvp:9: readXMLFile: ", 0), 0u) << report(r);
+  EXPECT_TRUE(has(err[0], "restart.vvm")) << report(r);
+  EXPECT_EQ(err[0].substr(err[0].size() - 11), " (in start)") << report(r);
+}
+
 // Defect 7: models were built without debug information. --debug builds
 // with -g -O0 and keeps the generated C++ beside the plugin; normal builds
 // carry line tables (crash reports use them).
