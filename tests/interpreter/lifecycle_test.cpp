@@ -186,6 +186,25 @@ TEST(Lifecycle, AnErrorAlwaysNamesItsBlock) {
   EXPECT_EQ(err[0].substr(err[0].size() - 11), " (in start)") << report(r);
 }
 
+// Issue 9, items 1 and 2: a vv 1.1 program sees OpenGL without including
+// it and writes 2D points with two coordinates; it draws its own red
+// triangle in the screenshot.
+TEST(Lifecycle, AVv11ProgramDrawsWithOpenGlItDidNotInclude) {
+  std::string d = fresh_dir("vv11_gl");
+  test_run::result r = batch({"--quiet", "--screenshot", d + "shot.png", "--size", "200x150",
+                              VV_TESTS_DIR "/models/vv11_gl_render.vvp"});
+  ASSERT_EQ(r.status, 0) << report(r);
+  image im = load_png(d + "shot.png");
+  ASSERT_TRUE(im.ok());
+  long red = 0;
+  for (int y = 0; y < im.height; ++y)
+    for (int x = 0; x < im.width; ++x) {
+      const unsigned char* p = im.at(x, y);
+      red += p[0] > 200 && p[1] < 60 && p[2] < 60;
+    }
+  EXPECT_GT(red, 200 * 150 / 10) << "the triangle is not drawn";
+}
+
 // Defect 7: models were built without debug information. --debug builds
 // with -g -O0 and keeps the generated C++ beside the plugin; normal builds
 // carry line tables (crash reports use them).

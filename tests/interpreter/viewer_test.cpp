@@ -53,6 +53,20 @@ TEST(ViewerScript, StepsRewindScreenshotsExportCameraAndQuit) {
   EXPECT_GT(large.pixels, small.pixels * 2) << describe(small) << " -> " << describe(large);
 }
 
+// Issue 9, item 25: a comment after a command, as docs/interpreter.md
+// shows them, was rejected.
+TEST(ViewerScript, CommentsAfterCommandsAreComments) {
+  std::string d = fresh_dir("script_comments");
+  write_text(d + "s.txt", script({"# a whole-line comment", "step 2   # two steps", "export S " + d + "S#1.vvm  # a '#' inside a word is not one",
+                                  "quit # done"}));
+  test_run::result r = viewer({"--script", d + "s.txt", loop_model});
+  ASSERT_FALSE(r.timed_out) << report(r);
+  EXPECT_EQ(r.status, 0) << report(r);
+  EXPECT_TRUE(viewer_errors(r.err).empty()) << report(r);
+  // Loop of the double pyramid, two steps: 6 + 12 + 48 vertices.
+  EXPECT_EQ(vvm_vertex_count(d + "S#1.vvm"), 66) << report(r);
+}
+
 // ---- 2. continuous modelling ----
 
 TEST(ViewerHotReload, EditedModelReloadsAndABrokenEditKeepsTheLastGoodModel) {

@@ -168,3 +168,49 @@ TEST(UtilGeometry, RotationFloatWithDoubleAngle) {
 }
 
 }  // namespace
+
+// Issue 9, item 3: vv 1.1's signature, returning the point and telling
+// whether it lies on each segment (ends included), worked out by hand.
+TEST(UtilGeometry, LineIntersectionPointCrossingInsideBoth) {
+  bool ia = false, ib = false;
+  Pt p = util::planar_line_intersection(Pt(0, 0), Pt(2, 2), Pt(0, 2), Pt(2, 0), ia, ib);
+  EXPECT_DOUBLE_EQ(p.x(), 1);
+  EXPECT_DOUBLE_EQ(p.y(), 1);
+  EXPECT_DOUBLE_EQ(p.z(), 0);
+  EXPECT_TRUE(ia);
+  EXPECT_TRUE(ib);
+}
+
+TEST(UtilGeometry, LineIntersectionPointOutsideOneSegment) {
+  bool ia = true, ib = true;
+  // a: y = 0 from x 0 to 1; b: x = 3 from y -1 to 1. They meet at (3, 0),
+  // beyond a's end, inside b.
+  Pt p = util::planar_line_intersection(Pt(0, 0), Pt(1, 0), Pt(3, -1), Pt(3, 1), ia, ib);
+  EXPECT_DOUBLE_EQ(p.x(), 3);
+  EXPECT_DOUBLE_EQ(p.y(), 0);
+  EXPECT_FALSE(ia);
+  EXPECT_TRUE(ib);
+}
+
+TEST(UtilGeometry, LineIntersectionPointAtAnEndIsOnTheSegment) {
+  bool ia = false, ib = false;
+  // b starts exactly on a's end (1/3, 1/3): a division gives it inexactly.
+  Pt p = util::planar_line_intersection(Pt(0, 0), Pt(1.0 / 3, 1.0 / 3), Pt(1.0 / 3, 1.0 / 3), Pt(1, -1), ia, ib);
+  EXPECT_NEAR(p.x(), 1.0 / 3, 1e-15);
+  EXPECT_NEAR(p.y(), 1.0 / 3, 1e-15);
+  EXPECT_TRUE(ia);
+  EXPECT_TRUE(ib);
+}
+
+TEST(UtilGeometry, LineIntersectionPointOfParallelOrCollinearLinesIsNone) {
+  bool ia = true, ib = true;
+  Pt p = util::planar_line_intersection(Pt(0, 0), Pt(1, 1), Pt(0, 1), Pt(2, 3), ia, ib);
+  EXPECT_TRUE(p == Pt());
+  EXPECT_FALSE(ia);
+  EXPECT_FALSE(ib);
+  ia = ib = true;
+  p = util::planar_line_intersection(Pt(0, 0), Pt(1, 0), Pt(2, 0), Pt(5, 0), ia, ib);  // collinear
+  EXPECT_TRUE(p == Pt());
+  EXPECT_FALSE(ia);
+  EXPECT_FALSE(ib);
+}

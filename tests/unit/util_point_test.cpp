@@ -266,3 +266,13 @@ TEST(UtilPoint, HeaderAlsoProvidesGeometry) {
 }
 
 }  // namespace
+
+// Issue 9, item 2: vv 1.1 programs write 2D points with two coordinates,
+// e.g. a normal `Pt n(-w.y(), w.x());`.
+TEST(UtilPoint, TwoCoordinatesMakeAPointOfTheXyPlane) {
+  Pt w(3, 4, 9);
+  Pt n(-w.y(), w.x());
+  expect_point(n, -4, 3, 0);
+  util::Point<float> f(1.5f, -2.0f);
+  expect_point(Pt(f), 1.5, -2, 0);
+}

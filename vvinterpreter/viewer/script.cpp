@@ -1,5 +1,6 @@
 #include "viewer/script.hpp"
 
+#include <cctype>
 #include <map>
 #include <sstream>
 
@@ -22,9 +23,15 @@ std::vector<script_command> parse_script(const std::string& text, const std::str
   std::istringstream lines(text);
   std::string line;
   for (int n = 1; std::getline(lines, line); ++n) {
+    // A '#' that starts a word starts a comment (to the end of the line).
+    for (std::size_t at = line.find('#'); at != std::string::npos; at = line.find('#', at + 1))
+      if (at == 0 || std::isspace(static_cast<unsigned char>(line[at - 1]))) {
+        line.erase(at);
+        break;
+      }
     std::istringstream words(line);
     std::string word;
-    if (!(words >> word) || word[0] == '#') continue;
+    if (!(words >> word)) continue;
     script_command c;
     c.line = n;
     auto bad = [&](const std::string& what) {

@@ -10,7 +10,8 @@
 // and `stop`: it ends a step that has run for half a second (as the Stop
 // button does: the model restarts at its last good state).
 //
-// Blank lines and lines starting with # are skipped.
+// Blank lines are skipped; a # that starts a word starts a comment, on a
+// line of its own or after a command.
 #pragma once
 
 #include <string>

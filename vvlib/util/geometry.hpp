@@ -86,6 +86,26 @@ bool planar_line_intersection(const Point<T>& a1, const Point<T>& a2, const Poin
   return true;
 }
 
+// vv 1.1's form: the point where the lines a1a2 and b1b2 cross in the
+// xy-plane (z = 0). ia tells whether it lies on the segment a1-a2, ends
+// included; ib the same for b1-b2. Parallel (or degenerate) lines give
+// Point() with both false.
+template <class T>
+Point<T> planar_line_intersection(const Point<T>& a1, const Point<T>& a2, const Point<T>& b1,
+                                  const Point<T>& b2, bool& ia, bool& ib) {
+  T sa = 0, sb = 0;
+  if (!planar_line_intersection(a1, a2, b1, b2, sa, sb)) {
+    ia = ib = false;
+    return Point<T>();
+  }
+  // An end point computed through a division may land a rounding error
+  // outside [0, 1]: ends are included all the same.
+  const T tol = std::numeric_limits<T>::epsilon() * T(8);
+  ia = sa >= -tol && sa <= T(1) + tol;
+  ib = sb >= -tol && sb <= T(1) + tol;
+  return Point<T>(a1.x() + sa * (a2.x() - a1.x()), a1.y() + sa * (a2.y() - a1.y()), T(0));
+}
+
 // v rotated counter-clockwise by theta radians about the z axis.
 template <class T>
 Point<T> planar_rotation(const Point<T>& v, detail::identity_t<T> theta) {

@@ -30,6 +30,8 @@ class Point {
 
   // GLM leaves a default-constructed vector uninitialised; vv 1.1 zeroed it.
   Point() : v_(T(0)) {}
+  //! A point of the xy-plane (z = 0), as vv 1.1 programs write 2D points.
+  Point(T x, T y) : v_(x, y, T(0)) {}
   Point(T x, T y, T z) : v_(x, y, z) {}
   explicit Point(const vec_type& v) : v_(v) {}
   template <class U>

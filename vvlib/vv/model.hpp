@@ -6,6 +6,10 @@
 #include <string>
 #include <vector>
 
+// vv 1.1 programs call OpenGL (glVertex3dv in a vertex's glRender(), the
+// render blocks) without including it: every program sees GL/gl.h.
+#include <GL/gl.h>
+
 #include <util/point.hpp>
 
 #include "plugin.hpp"
