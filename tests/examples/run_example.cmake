@@ -1,7 +1,9 @@
 # One example's regression test: run it in batch mode, export a mesh, and
 # check the export with vvm_check (counts, golden file).
 # -DINTERPRETER -DCHECK -DCACHE -DMODEL -DSTEPS -DOUT [-DMESH] [-DMAXFACE]
-# [-DVERTICES -DEDGES -DFACES] -DGOLDEN [-DTOLERANCE] [-DUPDATE=ON: write the golden file]
+# [-DVERTICES -DEDGES -DFACES] -DGOLDEN [-DTOLERANCE]
+# With VV_UPDATE_GOLDEN=1 in the environment (scripts/update-golden sets it
+# for its own run only) the export is written to GOLDEN instead.
 set(args --batch --quiet --cache ${CACHE} --steps ${STEPS} --export ${OUT})
 if(MESH)
   list(APPEND args --mesh ${MESH})
@@ -10,7 +12,7 @@ execute_process(COMMAND ${INTERPRETER} ${args} ${MODEL} RESULT_VARIABLE status E
 if(NOT status EQUAL 0)
   message(FATAL_ERROR "${MODEL} failed:\n${err}")
 endif()
-if(UPDATE)
+if("$ENV{VV_UPDATE_GOLDEN}" STREQUAL "1")
   file(COPY_FILE ${OUT} ${GOLDEN})
   message(STATUS "updated ${GOLDEN}")
   return()
