@@ -638,7 +638,8 @@ std::string last_line(const std::string& out) {
 const std::string cache_line = "compiled model found in the cache";
 
 // Requirement 5: --compile-only prints the plugin's path and exits 0; again,
-// it says the model came from the cache, and is fast.
+// it says the model came from the cache and builds nothing (the plugin file
+// is the same, untouched).
 TEST(CompileOnly, PrintsPluginPathThenFindsItInTheCache) {
   test_run::result first = vvi({"--compile-only", loop_vvp});
   ASSERT_EQ(first.status, 0) << first.err;
@@ -646,14 +647,13 @@ TEST(CompileOnly, PrintsPluginPathThenFindsItInTheCache) {
   EXPECT_EQ(fs::path(plugin).extension(), ".so") << first.out;
   EXPECT_TRUE(fs::is_regular_file(plugin)) << plugin;
 
-  auto t0 = std::chrono::steady_clock::now();
+  const auto built_at = fs::last_write_time(plugin);
   test_run::result again = vvi({"--compile-only", loop_vvp});
-  double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   ASSERT_EQ(again.status, 0) << again.err;
   EXPECT_TRUE(contains(again.out, cache_line)) << again.out;
   EXPECT_FALSE(contains(again.out, "compiled in")) << again.out;
   EXPECT_EQ(last_line(again.out), plugin);
-  EXPECT_LT(seconds, 1.0) << "a cached model should not be compiled again";
+  EXPECT_TRUE(fs::last_write_time(plugin) == built_at) << "a cached model was compiled again";
 }
 
 // Requirement 5: the plugin of examples/loop.vvp, loaded directly, runs
@@ -688,7 +688,7 @@ TEST(CompileOnly, PluginWithAbsoluteInputPathLoadsDirectly) {
 TEST(CompileOnly, SharedLibraryThatIsNotAModelNamesTheMissingEntryPoint) {
   const std::string dir = fresh_dir("not_a_model");
   const std::string so = dir + "libpugixml.so";
-  fs::copy_file("/usr/lib/x86_64-linux-gnu/libpugixml.so.1", so);
+  fs::copy_file(VV_PUGIXML_LIBRARY, so);
   test_run::result r = vvi({"--batch", so});
   EXPECT_NE(r.status, 0);
   EXPECT_TRUE(is_one_line(r.err));
@@ -699,7 +699,13 @@ TEST(CompileOnly, SharedLibraryThatIsNotAModelNamesTheMissingEntryPoint) {
 // Requirement 5: the same, given the system's versioned file name
 // (libpugixml.so.1) as the brief does.
 TEST(CompileOnly, VersionedSharedLibraryNamesTheMissingEntryPoint) {
-  test_run::result r = vvi({"--batch", "/usr/lib/x86_64-linux-gnu/libpugixml.so.1"});
+  // The library's versioned name beside the one CMake links (wherever the
+  // system keeps its libraries).
+  std::string versioned;
+  for (const auto& e : fs::directory_iterator(fs::path(VV_PUGIXML_LIBRARY).parent_path()))
+    if (e.path().filename().string().rfind("libpugixml.so.", 0) == 0) versioned = e.path().string();
+  ASSERT_FALSE(versioned.empty()) << "no libpugixml.so.N beside " << VV_PUGIXML_LIBRARY;
+  test_run::result r = vvi({"--batch", versioned});
   EXPECT_NE(r.status, 0);
   EXPECT_TRUE(is_one_line(r.err));
   EXPECT_TRUE(contains(r.err, "vv_plugin_")) << r.err;
