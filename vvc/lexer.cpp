@@ -5,6 +5,7 @@
 #include <cctype>
 #include <cstdio>
 #include <cstring>
+#include <filesystem>
 #include <string>
 
 namespace vvc {
@@ -55,7 +56,7 @@ class lexer {
         continue;
       }
       if (starts("//")) {
-        while (pos_ < s_.size() && s_[pos_] != '\n') ++pos_;
+        line_comment();
         space = true;
         continue;
       }
@@ -128,6 +129,19 @@ class lexer {
     pos_ += 2;
   }
 
+  // A // comment runs to the end of the line, and on over each line that a
+  // backslash at its end continues: C++ splices lines before it removes
+  // comments.
+  void line_comment() {
+    for (;;) {
+      while (pos_ < s_.size() && s_[pos_] != '\n') ++pos_;
+      std::size_t end = pos_;
+      if (end > 0 && s_[end - 1] == '\r') --end;
+      if (pos_ >= s_.size() || end == 0 || s_[end - 1] != '\\') return;
+      ++pos_, ++line_, line_begin_ = pos_;  // the next line is comment too
+    }
+  }
+
   // A preprocessor line, with its continuations. `#include "x.vvp"` brings
   // in the tokens of x.vvp instead.
   void preprocessor(token& t, std::size_t begin) {
@@ -149,7 +163,7 @@ class lexer {
     } else if (is_pragma_once(t.text)) {
       // Included .vvp files are pasted into one translation unit, where the
       // pragma would mean nothing: the lexer keeps the promise instead.
-      state_.once.push_back(f_.path);
+      state_.once.push_back(same_file(f_.path));
       t.text = std::string_view();
     }
   }
@@ -177,12 +191,21 @@ class lexer {
     return path.size() > 4 && path.compare(path.size() - 4, 4, ".vvp") == 0;
   }
 
+  // The one name of a file, however a path spells it ("./a.vvp", "x/../a.vvp",
+  // a link): include cycles and #pragma once compare these.
+  static std::string same_file(const std::string& path) {
+    std::error_code ec;
+    std::filesystem::path p = std::filesystem::weakly_canonical(path, ec);
+    return ec ? path : p.string();
+  }
+
   void include(const token& at, const std::string& name) {
     std::string path = name[0] == '/' ? name : f_.folder() + name;
+    std::string file = same_file(path);
     for (const std::string& done : state_.once)
-      if (done == path) return;
+      if (done == file) return;
     for (const source_file* open : state_.stack)
-      if (open->path == path) {
+      if (same_file(open->path) == file) {
         diag_.error(at, "'" + name + "' includes itself (through #include)");
         return;
       }

@@ -4,6 +4,7 @@
 #include <cstring>
 #include <fstream>
 #include <sstream>
+#include <sys/stat.h>
 
 namespace vvc {
 
@@ -28,6 +29,25 @@ std::string source_file::folder() const {
 }
 
 const source_file* source_set::load(const std::string& path, std::string* why) {
+  // Only a regular file of a sensible size is a program: a folder would read
+  // as an empty program, /dev/zero would never end, a FIFO would block.
+  struct stat st {};
+  if (stat(path.c_str(), &st) != 0) {
+    if (why) *why = std::strerror(errno);
+    return nullptr;
+  }
+  if (S_ISDIR(st.st_mode)) {
+    if (why) *why = "it is a folder, not a file";
+    return nullptr;
+  }
+  if (!S_ISREG(st.st_mode)) {
+    if (why) *why = "it is not a regular file (a device, a pipe or a socket)";
+    return nullptr;
+  }
+  if (static_cast<unsigned long long>(st.st_size) > max_source_bytes) {
+    if (why) *why = "it is larger than " + std::to_string(max_source_bytes >> 20) + " MiB";
+    return nullptr;
+  }
   std::ifstream in(path, std::ios::binary);
   if (!in) {
     if (why) *why = std::strerror(errno);
@@ -35,7 +55,10 @@ const source_file* source_set::load(const std::string& path, std::string* why) {
   }
   std::ostringstream ss;
   ss << in.rdbuf();
-  return add(path, ss.str());
+  std::string text = ss.str();
+  // A UTF-8 byte-order mark, as some editors write: not part of the program.
+  if (text.compare(0, 3, "\xEF\xBB\xBF") == 0) text.erase(0, 3);
+  return add(path, std::move(text));
 }
 
 std::vector<std::string> source_set::paths() const {

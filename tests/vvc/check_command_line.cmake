@@ -15,6 +15,10 @@ run(2 "no output file" ${PROGRAM})
 run(2 "no input file" -o ${WORK}/x.cpp)
 run(2 "unknown option '--frobnicate'" --frobnicate)
 run(1 "missing.vvp: error: cannot read file: No such file or directory" ${WORK}/missing.vvp -o ${WORK}/x.cpp)
+# Only regular files are programs (issue 9, item 8): a folder is not an
+# empty program, and /dev/zero would never end.
+run(1 "error: cannot read file: it is a folder, not a file" ${WORK} -o ${WORK}/x.cpp)
+run(1 "error: cannot read file: it is not a regular file" /dev/zero -o ${WORK}/x.cpp)
 file(REMOVE ${WORK}/ok.cpp)
 run(0 "^$" ${PROGRAM} -o ${WORK}/ok.cpp)
 if(NOT EXISTS ${WORK}/ok.cpp)
