@@ -8,6 +8,8 @@
 
 #include <gtest/gtest.h>
 
+#include <limits>
+
 #include <vector>
 
 namespace {
@@ -161,6 +163,30 @@ TEST_F(Queries, NextIToWithValencePlusOneIsNextTo) {
 TEST_F(Queries, NextIToNullWhenNotANeighbour) {
   EXPECT_FALSE(vv::next_to(p[2], p[0], 2));
   EXPECT_FALSE(vv::next_to(V(), p[0], 3));
+}
+
+// Issue 9, item 13: a count below 1 was taken silently (next(0)to gave x
+// itself, next(-1)to acted as prevto), and LONG_MAX / LONG_MIN overflowed.
+TEST_F(Queries, NextIToAndPrevIToRefuseACountBelowOne) {
+  for (long bad : {0L, -1L, -7L, std::numeric_limits<long>::min()}) {
+    try {
+      vv::next_to(p[1], p[0], bad, vv::where{"model.vvp", 12});
+      ADD_FAILURE() << "next(" << bad << ")to was accepted";
+    } catch (const vv::error& e) {
+      EXPECT_EQ(std::string(e.what()),
+                "model.vvp:12: next(i)to: the count must be 1 or more, not " + std::to_string(bad));
+    }
+    EXPECT_THROW(vv::prev_to(p[1], p[0], bad), vv::error);
+  }
+}
+
+TEST_F(Queries, AHugeCountIsTakenModuloTheValence) {
+  long big = std::numeric_limits<long>::max();
+  long rest = big % static_cast<long>(vv::valence(p[0]));
+  V forward = rest ? vv::next_to(p[1], p[0], rest) : p[1];
+  V backward = rest ? vv::prev_to(p[1], p[0], rest) : p[1];
+  EXPECT_EQ(vv::next_to(p[1], p[0], big), forward);
+  EXPECT_EQ(vv::prev_to(p[1], p[0], big), backward);
 }
 
 TEST_F(Queries, PrevIToWithOneIsPrevTo) {

@@ -34,46 +34,55 @@ vertex<typename V::traits_type> any_in(const V& v, where w = where::here()) {
 }
 
 namespace detail {
-// The neighbour i places from x around v (cyclically; negative goes back).
+// The neighbour `count` places after (forward) or before x around v,
+// cyclically. count >= 1; taken modulo the valence first, so no sum
+// overflows however large it is.
 template <class V>
 vertex<typename V::traits_type> step_from(const vertex<typename V::traits_type>& x, const V& v,
-                                          long i, const char* op, const where& w) {
+                                          unsigned long count, bool forward, const char* op, const where& w) {
   using vx = vertex<typename V::traits_type>;
   auto s = view(v, op, w);
   // A null or foreign x has slot 0, which no entry holds.
   std::int32_t pos = find(*s.nb, slot_in(x, s.ctx));
   if (pos < 0) return vx();
-  long n = static_cast<long>(s.nb->size());
-  long k = pos + i;
-  if (k < 0 || k >= n) k = (k % n + n) % n;
-  return vx::from_slot(s.ctx, entry_id((*s.nb)[static_cast<std::uint32_t>(k)]));
+  unsigned long n = s.nb->size();
+  unsigned long k = count % n;
+  unsigned long at = forward ? (static_cast<unsigned long>(pos) + k) % n : (static_cast<unsigned long>(pos) + n - k) % n;
+  return vx::from_slot(s.ctx, entry_id((*s.nb)[static_cast<std::uint32_t>(at)]));
+}
+
+// The count of next(i)to / prev(i)to: 1 or more.
+inline unsigned long step_count(long i, const char* op, const where& w) {
+  if (i < 1)
+    raise(w, op, [&] { return "the count must be 1 or more, not " + std::to_string(i); });
+  return static_cast<unsigned long>(i);
 }
 }  // namespace detail
 
 //! `next(i)to x in v` (i = 1: `nextto`): the neighbour i places after x
-//! in v's rotation, counted cyclically (a negative i counts backwards); null
-//! when x is not a neighbour of v.
+//! in v's rotation, counted cyclically; null when x is not a neighbour of
+//! v. i < 1 is an error.
 template <class V, detail::if_vertex_like<V> = 0>
 vertex<typename V::traits_type> next_to(const vertex<typename V::traits_type>& x, const V& v,
                                         long i, where w = where::here()) {
-  return detail::step_from(x, v, i, "nextto", w);
+  return detail::step_from(x, v, detail::step_count(i, "next(i)to", w), true, "next(i)to", w);
 }
 template <class V, detail::if_vertex_like<V> = 0>
 vertex<typename V::traits_type> next_to(const vertex<typename V::traits_type>& x, const V& v,
                                         where w = where::here()) {
-  return detail::step_from(x, v, 1L, "nextto", w);
+  return detail::step_from(x, v, 1UL, true, "nextto", w);
 }
 
-//! `prev(i)to x in v` (i = 1: `prevto`).
+//! `prev(i)to x in v` (i = 1: `prevto`); i < 1 is an error.
 template <class V, detail::if_vertex_like<V> = 0>
 vertex<typename V::traits_type> prev_to(const vertex<typename V::traits_type>& x, const V& v,
                                         long i, where w = where::here()) {
-  return detail::step_from(x, v, -i, "prevto", w);
+  return detail::step_from(x, v, detail::step_count(i, "prev(i)to", w), false, "prev(i)to", w);
 }
 template <class V, detail::if_vertex_like<V> = 0>
 vertex<typename V::traits_type> prev_to(const vertex<typename V::traits_type>& x, const V& v,
                                         where w = where::here()) {
-  return detail::step_from(x, v, -1L, "prevto", w);
+  return detail::step_from(x, v, 1UL, false, "prevto", w);
 }
 
 //! `flagged in v`: the neighbour at the flagged position, or null.
