@@ -11,6 +11,9 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cmath>
+#include <cstring>
+#include <limits>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -745,3 +748,63 @@ TEST(VvmMalformed, ThereAreAtLeastTwelveMalformedFiles) {
 }
 
 }  // namespace
+
+// Issue 9, item 16: a NaN or infinite position was written but could not
+// be read back ("cannot read \"nan 0 0\""); every double must round-trip,
+// bit for bit (NaN as NaN).
+TEST(VvmValues, EveryDoubleRoundTrips) {
+  const double values[] = {std::numeric_limits<double>::quiet_NaN(),
+                           std::numeric_limits<double>::infinity(),
+                           -std::numeric_limits<double>::infinity(),
+                           std::numeric_limits<double>::denorm_min(),
+                           -std::numeric_limits<double>::denorm_min(),
+                           std::numeric_limits<double>::max(),
+                           std::numeric_limits<double>::lowest(),
+                           std::numeric_limits<double>::min(),
+                           -0.0,
+                           0.1,
+                           1.0 / 3};
+  std::string path = scratch_dir() + "every_double.vvm";
+  {
+    vv::graph<VP>::context ctx;
+    vv::graph<VP>::mesh m(ctx);
+    for (double d : values) {
+      auto v = ctx.new_vertex();
+      v->pos = Pt(d, -d, 1);
+      v->c = d;
+      m.add(v);
+    }
+    vv::write_vvm(m, path);
+  }
+  vv::graph<VP>::context ctx;
+  vv::graph<VP>::mesh m(ctx);
+  ASSERT_NO_THROW(vv::read_vvm(m, path)) << slurp(path);
+  ASSERT_EQ(m.size(), std::size(values));
+  std::size_t i = 0;
+  auto same = [](double a, double b) {
+    return std::isnan(a) ? std::isnan(b) : std::memcmp(&a, &b, sizeof a) == 0;
+  };
+  for (auto v : vv::each(m)) {
+    double d = values[i++];
+    EXPECT_TRUE(same(v->c, d)) << d << " came back as " << v->c;
+    EXPECT_TRUE(same(v->pos.x(), d) && same(v->pos.y(), -d)) << d << " came back as " << v->pos;
+  }
+}
+
+// Issue 9, item 16: "1e999" was rejected while "1e5000" was read as inf.
+// A literal past the range of double is an infinity, whatever its exponent.
+TEST(VvmValues, LiteralsPastTheRangeAreInfinities) {
+  std::string path = scratch_dir() + "out_of_range.vvm";
+  std::ofstream(path) << "<mesh>\n  <v pos=\"1e999 -1e5000 0\" c=\"1e999\" nb=\"\" />\n"
+                         "  <v pos=\"0 0 0\" c=\"-1e5000\" nb=\"\" />\n</mesh>\n";
+  vv::graph<VP>::context ctx;
+  vv::graph<VP>::mesh m(ctx);
+  ASSERT_NO_THROW(vv::read_vvm(m, path));
+  std::vector<vv::graph<VP>::vertex> vs;
+  for (auto v : vv::each(m)) vs.push_back(v);
+  ASSERT_EQ(vs.size(), 2u);
+  EXPECT_EQ(vs[0]->c, std::numeric_limits<double>::infinity());
+  EXPECT_EQ(vs[0]->pos.x(), std::numeric_limits<double>::infinity());
+  EXPECT_EQ(vs[0]->pos.y(), -std::numeric_limits<double>::infinity());
+  EXPECT_EQ(vs[1]->c, -std::numeric_limits<double>::infinity());
+}

@@ -51,6 +51,23 @@ void write_float(std::string& out, T v) {
   out.append(buf, res.ptr);
 }
 
+// Reads one number at `at` (after blanks) and moves past it. Everything
+// to_chars writes comes back exactly, nan and inf included; a literal past
+// the type's range is read as an infinity (as strtod does), whatever its
+// exponent.
+template <class T>
+bool read_float(const char*& at, T& v) {
+  char* end = nullptr;
+  T x;
+  if constexpr (std::is_same_v<T, float>) x = std::strtof(at, &end);
+  else if constexpr (std::is_same_v<T, double>) x = std::strtod(at, &end);
+  else x = std::strtold(at, &end);
+  if (end == at) return false;
+  at = end;
+  v = x;
+  return true;
+}
+
 inline bool only_space_left(std::istream& is) {
   is >> std::ws;
   return is.eof();
@@ -100,15 +117,20 @@ bool text_to_value(const std::string& text, T& v) {
     if (text == "0" || text == "false") return v = false, true;
     return false;
   } else if constexpr (std::is_floating_point_v<T>) {
-    // strtod also takes the "inf" and "nan" that to_chars writes.
-    const char* begin = text.c_str();
-    char* end = nullptr;
-    long double x = std::strtold(begin, &end);
-    if (end == begin) return false;
+    const char* end = text.c_str();
+    if (!detail::read_float(end, v)) return false;
     while (*end == ' ' || *end == '\t' || *end == '\n' || *end == '\r') ++end;
-    if (*end != '\0') return false;
-    if (std::isfinite(x) && std::fabs(x) > std::numeric_limits<T>::max()) return false;
-    v = static_cast<T>(x);
+    return *end == '\0';
+  } else if constexpr (detail::is_point_like<T>::value) {
+    // Three numbers, read as the scalars are (so nan and inf come back).
+    using S = std::decay_t<decltype(std::declval<const T&>().x())>;
+    S c[3];
+    const char* at = text.c_str();
+    for (S& x : c)
+      if (!detail::read_float(at, x)) return false;
+    while (*at == ' ' || *at == '\t' || *at == '\n' || *at == '\r') ++at;
+    if (*at != '\0') return false;
+    v = T(c[0], c[1], c[2]);
     return true;
   } else if constexpr (std::is_same_v<T, std::string>) {
     v = text;
