@@ -112,7 +112,7 @@ int run_model_headless(const options& o) {
 // they are renamed into place.
 void remove_temporaries(const options& o) {
   for (const std::string& target : {o.export_path, o.screenshot})
-    if (!target.empty()) std::remove(vv::io::temporary_beside(target).c_str());
+    if (!target.empty()) std::remove(vv::io::temporary_for(target).c_str());
 }
 
 }  // namespace

@@ -12,17 +12,18 @@
 namespace vvi {
 
 std::string write_png(const std::string& path, int width, int height, const std::vector<std::uint8_t>& rgba) {
-  // Named as vvlib names its temporaries, so batch mode can remove it when
-  // the run is killed.
-  std::string tmp = vv::io::temporary_beside(path);
-  if (!stbi_write_png(tmp.c_str(), width, height, 4, rgba.data(), width * 4)) {
-    std::remove(tmp.c_str());
-    return path + ": cannot write the PNG file";
-  }
-  if (std::rename(tmp.c_str(), path.c_str()) != 0) {
-    std::string why = std::strerror(errno);
-    std::remove(tmp.c_str());
-    return path + ": cannot write the PNG file: " + why;
+  // Encoded in memory, then written as vvlib writes every file: checked,
+  // atomic, through a symbolic link to its target.
+  std::string png;
+  auto append = [](void* to, void* data, int size) {
+    static_cast<std::string*>(to)->append(static_cast<const char*>(data), static_cast<std::size_t>(size));
+  };
+  if (!stbi_write_png_to_func(append, &png, width, height, 4, rgba.data(), width * 4))
+    return path + ": cannot encode the PNG image";
+  try {
+    vv::io::write_file_atomically(path, png);
+  } catch (const std::exception& e) {
+    return e.what();
   }
   return "";
 }

@@ -14,6 +14,7 @@
 #include <array>
 #include <cstdint>
 #include <limits>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -84,13 +85,20 @@ inline void write_polygon_file(const std::string& path,
   soup.reserve(points.size());
   for (const auto& p : points) soup.emplace_back(p[0], p[1], p[2]);
   if (ext == ".stl") faces = detail::fan_triangles(faces);  // STL holds triangles only
-  std::string tmp = io::temporary_beside(path);
+  // Written to memory first: CGAL's file writers never report a failed
+  // flush or close, so a full disk would leave a truncated file. The bytes
+  // then go through vvlib's checked, atomic writer.
+  std::ostringstream os(std::ios::binary);
+  bool binary = ext == ".ply" || ext == ".stl";
+  CGAL::IO::set_mode(os, binary ? CGAL::IO::BINARY : CGAL::IO::ASCII);
   // 17 significant digits: every double reads back exactly.
-  if (!CGAL::IO::write_polygon_soup(tmp, soup, faces, CGAL::parameters::stream_precision(17))) {
-    std::remove(tmp.c_str());
-    throw error(path, 0, "cannot write file");
-  }
-  io::commit_file(tmp, path);
+  auto np = CGAL::parameters::stream_precision(17);
+  bool ok = ext == ".obj"   ? CGAL::IO::write_OBJ(os, soup, faces, np)
+            : ext == ".off" ? CGAL::IO::write_OFF(os, soup, faces, np)
+            : ext == ".ply" ? CGAL::IO::write_PLY(os, soup, faces, np)
+                            : CGAL::IO::write_STL(os, soup, faces, np);
+  if (!ok) throw error(path, 0, "cannot write file: the " + ext.substr(1) + " writer failed");
+  io::write_file_atomically(path, os.str());
 }
 
 //! Writes m to a file, atomically; nothing is written on failure.
@@ -99,6 +107,9 @@ void write_mesh(const mesh<Tr>& m, const std::string& path, const export_options
   std::string ext = io::extension_of(path);
   if (ext == ".vvm") return write_vvm(m, path);
   if (!detail::is_polygon_format(ext)) detail::unknown_format(path);
+  if constexpr (!detail::has_pos<typename Tr::vertex_props>::value)
+    throw error(path, 0, "the vertices have no 'pos' property, so a " + ext.substr(1) +
+                             " file cannot hold them (.vvm can)");
   std::vector<std::array<double, 3>> points;
   points.reserve(m.size());
   for (std::uint32_t id : m.slots()) {
