@@ -34,6 +34,7 @@ bool parser::enter() {
   if (nesting_ == max_nesting + 1)
     error(peek(), "nested too deeply (more than " + std::to_string(max_nesting) + " levels)");
   pos_ = toks_.size() - 1;  // give up on the rest: it cannot be translated
+  gave_up_ = true;
   return false;
 }
 

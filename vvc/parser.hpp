@@ -47,7 +47,12 @@ class parser {
   //! Consumes `text` or reports "expected `text` <context>".
   const token* expect(std::string_view text, const std::string& context);
   bool at_end() const { return peek().kind == tok::eof; }
-  void error(const token& at, std::string message) { diag_.error(at, std::move(message)); }
+  //! Reports an error, unless the parser has given up on input nested too
+  //! deeply: everything it would say after that ("unterminated '('" at
+  //! each open level) is noise, not another error.
+  void error(const token& at, std::string message) {
+    if (!gave_up_) diag_.error(at, std::move(message));
+  }
   //! How a message names a token: 'x', or "the end of the file".
   static std::string found(const token& t);
   //! Skips to just after the next ; or to a } that closes the statement.
@@ -110,6 +115,7 @@ class parser {
   std::size_t pos_ = 0;
   int depth_ = 0;             // nesting of bodies (0: top level)
   int nesting_ = 0;           // groups, operands and statements open now
+  bool gave_up_ = false;      // nested past max_nesting: the rest is not parsed
   //! Guards recursion: past max_nesting the input is given up on (with an
   //! error), so no input can exhaust the stack.
   bool enter();

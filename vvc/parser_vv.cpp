@@ -79,6 +79,11 @@ bool parser::parse_vv_expression(pieces& out) {
 piece parser::parse_query() {
   piece p;
   p.kind = piece_kind::query;
+  nesting_guard guard(*this);  // queries nest inside their operands
+  if (!guard.ok()) {
+    p.tok = &peek();
+    return p;
+  }
   p.tok = take();
   std::string w(p.tok->text);
   std::string after_kw = "after '" + w + "'";
@@ -263,6 +268,11 @@ piece parser::parse_old_state() {
 piece parser::parse_path() {
   piece p;
   p.kind = piece_kind::path;
+  nesting_guard guard(*this);  // paths nest inside their operands
+  if (!guard.ok()) {
+    p.tok = &peek();
+    return p;
+  }
   p.tok = take();
   p.assign = accept("&");
   if (!at("(")) {

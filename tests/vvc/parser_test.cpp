@@ -187,3 +187,29 @@ TEST(Diagnostics, EmptyDeclaratorInAPropertyBlockIsReported) {
   EXPECT_EQ(t.diag.list()[0].message, "expected a property name in this declaration");
   EXPECT_EQ(t.diag.list()[0].line, 2);
 }
+
+// Issue 9, item 6: 10,000 nested paths or queries overflowed the stack:
+// their parsing did not go through the nesting guard. Item 11: 10,000
+// balanced parentheses gave 24 false "unterminated '('" errors before the
+// real one. Each is now exactly one error: "nested too deeply".
+TEST(Nesting, DeepPathsQueriesAndParenthesesAreOneClearError) {
+  const int n = 10000;
+  auto repeat = [](const std::string& s, int k) {
+    std::string out;
+    for (int i = 0; i < k; ++i) out += s;
+    return out;
+  };
+  const std::string programs[] = {
+      "void f(vertex a, vertex b) { vertex c = " + repeat("@(", n) + "a, b" + repeat(") next @", n) + "; }\n",
+      "void f(vertex a, vertex b) { vertex c = " + repeat("nextto (", n) + "a" + repeat(") in b", n) + "; }\n",
+      "void f(vertex a, vertex b) { vertex c = " + repeat("next(", n) + "1" + repeat(")to a in b", n) + "; }\n",
+      "int x = " + repeat("(", n) + "1" + repeat(")", n) + ";\n",
+  };
+  for (const std::string& program : programs) {
+    vvc::translation t = failed(program);
+    ASSERT_EQ(t.diag.list().size(), 1u) << program.substr(0, 60);
+    EXPECT_NE(vvc::format(t.diag.list()[0]).find("error: nested too deeply (more than 256 levels)"),
+              std::string::npos)
+        << vvc::format(t.diag.list()[0]);
+  }
+}
