@@ -83,6 +83,7 @@ class parser {
   //! postfix = "(" run ")" | "[" run "]" | "." name | "->" name | "::" name | "$" name | "++" | "--"
   void parse_postfix(pieces& out, bool allow_property);
   piece parse_old_state();
+  void refuse_writing_the_old_state(const pieces& out, const token& op);
   piece parse_path();
   piece parse_query();
   //! Turns a parenthesised group that holds exactly `operand ^ operand`

@@ -27,7 +27,53 @@ bool is_specifier_token(const piece& p) {
           t.text == "<" || t.text == ">" || t.text == ",");
 }
 
+bool is_assignment(const token& t) {
+  if (t.kind != tok::punct) return false;
+  for (std::string_view op : {"=", "+=", "-=", "*=", "/=", "%=", "&=", "|=", "^=", "<<=", ">>=", "++", "--"})
+    if (t.text == op) return true;
+  return false;
+}
+
+// The old state the operand ending `out` writes to, as in `p, `p$pos or
+// `p$pos[0], or null: the operand's end is walked back over properties,
+// subscripts and member names.
+const piece* written_old_state(const pieces& out) {
+  std::size_t i = out.size();
+  while (i > 0) {
+    const piece& p = out[i - 1];
+    bool postfix = p.kind == piece_kind::property || is_group(p, "[") ||
+                   (p.kind == piece_kind::token && (p.tok->is(".") || p.tok->is_identifier()) && i >= 2 &&
+                    (p.tok->is(".") || is_token(out[i - 2], ".")));
+    if (!postfix) break;
+    --i;
+  }
+  if (i == 0 || out[i - 1].kind != piece_kind::old_state) return nullptr;
+  return &out[i - 1];
+}
+
+// "p" for `p, "this vertex" for an operand that is more than a name.
+std::string old_state_subject(const piece& old) {
+  if (old.parts.size() == 1 && old.parts[0].size() == 1 && old.parts[0][0].kind == piece_kind::token &&
+      old.parts[0][0].tok->is_identifier())
+    return std::string(old.parts[0][0].tok->text);
+  return "this vertex";
+}
+
 }  // namespace
+
+// Writing to the old state would change a copy that the next synchronise
+// discards (and is a const error in the generated C++): say so here.
+void parser::refuse_writing_the_old_state(const pieces& out, const token& op) {
+  if (!is_assignment(op)) return;
+  const piece* old = written_old_state(out);
+  if (!old && (op.is("++") || op.is("--")) && peek(1).kind == tok::backtick) {
+    error(peek(1), "the old state of a vertex is read-only: it is what the vertex was at 'synchronise'");
+    return;
+  }
+  if (old)
+    error(*old->tok, "the old state of " + old_state_subject(*old) +
+                         " is read-only: it is what the vertex was at 'synchronise'");
+}
 
 // run = { group | vv-expression | "$" name | token } up to a stop token (or
 // a closer) at this depth; neither is consumed.
@@ -63,6 +109,7 @@ pieces parser::parse_run(std::initializer_list<std::string_view> stops, mode m,
       out.push_back(std::move(p));
       continue;
     }
+    refuse_writing_the_old_state(out, t);
     piece p;
     p.tok = take();
     out.push_back(std::move(p));
