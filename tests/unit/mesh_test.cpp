@@ -969,6 +969,49 @@ TEST(ForallMesh, AssigningTheMeshInsideItsLoop) {
   EXPECT_EQ(M.generation, 4);
 }
 
+// Moving the mesh out of its own loop, or swapping it, copies instead of
+// stealing the storage the loop reads; the loop then sees the new members.
+TEST(ForallMesh, MovingOrSwappingTheMeshInsideItsLoop) {
+  G::context ctx;
+  std::vector<V> vs = make_vertices(ctx, 6);
+  Mesh S(ctx), N(ctx);
+  for (int i = 0; i < 4; ++i) S.add(vs[static_cast<std::size_t>(i)]);
+  std::vector<int> seen;
+  for (V v : vv::each(S)) {
+    seen.push_back(v->tag);
+    if (v->tag == 2) N = std::move(S);  // S empties: the loop ends
+  }
+  EXPECT_EQ(seen, (std::vector<int>{1, 2}));
+  EXPECT_TRUE(S.empty());
+  EXPECT_EQ(N.size(), 4u);
+
+  seen.clear();
+  for (V v : vv::each(N)) {
+    seen.push_back(v->tag);
+    if (v->tag == 1) {
+      Mesh taken(std::move(N));  // move construction from the iterated mesh
+      EXPECT_EQ(taken.size(), 4u);
+    }
+  }
+  EXPECT_EQ(seen, std::vector<int>{1});
+  EXPECT_TRUE(N.empty());
+
+  Mesh A(ctx), B(ctx);
+  for (int i = 0; i < 4; ++i) A.add(vs[static_cast<std::size_t>(i)]);
+  B.add(vs[4]);
+  B.add(vs[5]);
+  seen.clear();
+  for (V v : vv::each(A)) {
+    seen.push_back(v->tag);
+    if (v->tag == 2) std::swap(A, B);  // 3, 4 left A; 5, 6 came in after the loop's start
+  }
+  EXPECT_EQ(seen, (std::vector<int>{1, 2}));
+  EXPECT_EQ(tags_of(A), (std::vector<int>{5, 6}));
+  EXPECT_EQ(tags_of(B), (std::vector<int>{1, 2, 3, 4}));
+  EXPECT_NO_THROW(vv::check_invariants(A));
+  EXPECT_NO_THROW(vv::check_invariants(B));
+}
+
 TEST(ForallMesh, NestedLoopsOverTheSameMesh) {
   G::context ctx;
   Mesh M(ctx);

@@ -44,11 +44,18 @@ class mesh : public Tr::mesh_props {
   }
   explicit mesh(context_type& ctx) : props_type(), ctx_(&ctx) {}
   mesh(const mesh& o) : props_type(o), ctx_(o.ctx_) { copy_members(o); }
-  mesh(mesh&& o) noexcept
-      : props_type(std::move(static_cast<props_type&>(o))), ctx_(o.ctx_),
-        order_(std::move(o.order_)), count_(o.count_), holes_(o.holes_) {
+  //! A mesh being iterated is copied, then emptied in place: its loop's
+  //! positions stay valid and it sees the members removed.
+  mesh(mesh&& o) noexcept : props_type(std::move(static_cast<props_type&>(o))), ctx_(o.ctx_) {
+    if (o.iterating_ > 0) {
+      copy_members(o);
+      o.clear();
+      return;
+    }
+    order_.swap(o.order_);
     index_.swap(o.index_);
-    o.order_.clear();
+    count_ = o.count_;
+    holes_ = o.holes_;
     o.count_ = o.holes_ = 0;
   }
   //! `M = N`: the same set (vertices are shared) and the same properties.
@@ -65,7 +72,11 @@ class mesh : public Tr::mesh_props {
   }
   mesh& operator=(mesh&& o) noexcept(false) {
     if (this == &o) return *this;
-    if (iterating_ > 0) return *this = static_cast<const mesh&>(o);
+    if (iterating_ > 0 || o.iterating_ > 0) {  // `N = std::move(S)` or std::swap inside a loop
+      *this = static_cast<const mesh&>(o);
+      o.clear();
+      return *this;
+    }
     static_cast<props_type&>(*this) = std::move(static_cast<props_type&>(o));
     swap_members(o);
     o.clear();
