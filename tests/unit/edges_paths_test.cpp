@@ -121,6 +121,39 @@ TEST_F(Edges, RecordGoesAwayWithTheEntry) {
 
 // =========================================================== (a|b) records
 
+// Issue 9, item 15: a record reference is valid until the next edit of
+// the neighbourhood it lives in; records keep their values through edits
+// (read them again through (a^b)).
+TEST_F(Edges, RecordsKeepTheirValuesThroughEditsOfTheNeighbourhood) {
+  const std::vector<V> around = {p[1], p[5], p[3], p[4]};  // 1: 2 6 4 5
+  for (std::size_t i = 0; i < around.size(); ++i) vv::edge(p[0], around[i]).mark = 10 + static_cast<int>(i);
+  std::vector<V> added;
+  for (int i = 0; i < 12; ++i) {  // past the inline capacity and back
+    added.push_back(ctx.new_vertex());
+    vv::splice_after(added.back(), p[1], p[0]);
+  }
+  for (const V& x : added) vv::erase_from(x, p[0]);
+  for (std::size_t i = 0; i < around.size(); ++i)
+    EXPECT_EQ(vv::edge(p[0], around[i]).mark, 10 + static_cast<int>(i));
+  EXPECT_TRUE(ok());
+}
+
+#if VV_MOVE_RECORDS_ON_EDIT
+// The sanitizer build moves a neighbourhood's records on every edit, so a
+// reference kept past an edit is reported by AddressSanitizer where it is
+// used, instead of silently writing into another entry.
+TEST_F(Edges, AReferenceKeptPastAnEditIsReportedInTheSanitizerBuild) {
+  EXPECT_DEATH(
+      {
+        EP& kept = vv::edge(p[0], p[1]);
+        V x = ctx.new_vertex();
+        vv::splice_after(x, p[1], p[0]);
+        kept.mark = 7;
+      },
+      "heap-use-after-free");
+}
+#endif
+
 TEST_F(Edges, SymmetricWritesBothDirections) {
   vv::edge(p[1], p[0]).b = true;
   vv::sym_edge(p[0], p[1]).mark = 9;

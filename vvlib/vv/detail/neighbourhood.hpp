@@ -5,6 +5,12 @@
 // longer list moves to the heap and moves back when it shrinks to K again,
 // so "size <= K" always means "inline". The whole object is 8 + 4K bytes
 // for record-less entries (32 bytes for K = 6).
+//
+// A reference to a half-edge record (`edge& r = (v^a);`) is valid until the
+// next edit of v's neighbourhood, which may move the records. Under
+// AddressSanitizer, lists with records live on the heap and every edit
+// moves them, so a reference kept past an edit is reported where it is used
+// (VV_MOVE_RECORDS_ON_EDIT=0 turns this off).
 #pragma once
 
 #include <algorithm>
@@ -15,6 +21,19 @@
 #include <new>
 #include <type_traits>
 #include <utility>
+
+#ifndef VV_MOVE_RECORDS_ON_EDIT
+#if defined(__SANITIZE_ADDRESS__)
+#define VV_MOVE_RECORDS_ON_EDIT 1
+#elif defined(__has_feature)
+#if __has_feature(address_sanitizer)
+#define VV_MOVE_RECORDS_ON_EDIT 1
+#endif
+#endif
+#endif
+#ifndef VV_MOVE_RECORDS_ON_EDIT
+#define VV_MOVE_RECORDS_ON_EDIT 0
+#endif
 
 namespace vv::detail {
 
@@ -51,6 +70,9 @@ struct entry_traits<E, true> {
 template <class Entry, unsigned K>
 class neighbourhood {
   static_assert(K >= 1, "inline capacity must be at least one entry");
+  // Checked builds: lists with records are always on the heap and every
+  // edit moves them (see the top of this file).
+  static constexpr bool moves_on_edit = VV_MOVE_RECORDS_ON_EDIT && !std::is_same<Entry, std::uint32_t>::value;
 
  public:
   //! Flag values: an index into the list, or one of these.
@@ -58,11 +80,16 @@ class neighbourhood {
   //! Only in an old state: never synchronised (behaves as an empty list).
   static constexpr std::int32_t never_synchronised = -2;
 
-  neighbourhood() noexcept = default;
-  neighbourhood(const neighbourhood& o) : flag_(o.flag_) { assign(o.data(), o.size_); }
+  neighbourhood() noexcept {
+    if constexpr (moves_on_edit) set_heap(heap_rep{nullptr, 0});
+  }
+  neighbourhood(const neighbourhood& o) : neighbourhood() {
+    flag_ = o.flag_;
+    assign(o.data(), o.size_);
+  }
   neighbourhood& operator=(const neighbourhood& o) {
     if (this == &o) return *this;
-    if (std::is_trivially_copyable<Entry>::value && size_ <= K && o.size_ <= K) {
+    if (!moves_on_edit && std::is_trivially_copyable<Entry>::value && size_ <= K && o.size_ <= K) {
       // Both inline (the common case, e.g. in synchronise): copy the bytes.
       std::memcpy(static_cast<void*>(this), static_cast<const void*>(&o), sizeof *this);
       return *this;
@@ -92,6 +119,14 @@ class neighbourhood {
   //! Replace the contents by n entries (the flag is left alone).
   void assign(const Entry* src, std::uint32_t n) {
     if (src == data() && n == size_) return;
+    if constexpr (moves_on_edit) {
+      Entry* block = allocate(n);
+      std::uninitialized_copy(src, src + n, block);
+      release();
+      set_heap(heap_rep{block, n});
+      size_ = n;
+      return;
+    }
     destroy_all();
     if (n > K) {
       if (is_inline() || heap().cap < n) {
@@ -109,7 +144,7 @@ class neighbourhood {
   //! Insert e before position pos (pos == size() appends).
   void insert(std::uint32_t pos, const Entry& e) {
     Entry copy(e);  // e may live in this list
-    if (size_ == K || (!is_inline() && size_ == heap().cap)) {
+    if (moves_on_edit || size_ == K || (!is_inline() && size_ == heap().cap)) {
       reallocate_with(pos, std::move(copy));
       return;
     }
@@ -126,6 +161,16 @@ class neighbourhood {
 
   //! Remove the entry at pos.
   void erase(std::uint32_t pos) {
+    if constexpr (moves_on_edit) {
+      Entry* old = data();
+      Entry* block = allocate(size_ - 1);
+      std::uninitialized_move(old, old + pos, block);
+      std::uninitialized_move(old + pos + 1, old + size_, block + pos);
+      release();
+      set_heap(heap_rep{block, size_ - 1});
+      --size_;
+      return;
+    }
     Entry* d = data();
     std::move(d + pos + 1, d + size_, d + pos);
     d[size_ - 1].~Entry();
@@ -136,6 +181,7 @@ class neighbourhood {
   void clear() noexcept {
     release();
     size_ = 0;
+    if constexpr (moves_on_edit) set_heap(heap_rep{nullptr, 0});
   }
 
  private:
@@ -148,7 +194,7 @@ class neighbourhood {
   static constexpr std::size_t storage_align =
       alignof(Entry) > alignof(heap_rep) ? alignof(Entry) : alignof(heap_rep);
 
-  bool is_inline() const noexcept { return size_ <= K; }
+  bool is_inline() const noexcept { return !moves_on_edit && size_ <= K; }
   Entry* inline_data() noexcept { return std::launder(reinterpret_cast<Entry*>(storage_)); }
   const Entry* inline_data() const noexcept {
     return std::launder(reinterpret_cast<const Entry*>(storage_));
@@ -161,7 +207,7 @@ class neighbourhood {
   void set_heap(const heap_rep& h) noexcept { std::memcpy(storage_, &h, sizeof h); }
 
   static Entry* allocate(std::uint32_t n) {
-    return static_cast<Entry*>(::operator new(sizeof(Entry) * n));
+    return n == 0 ? nullptr : static_cast<Entry*>(::operator new(sizeof(Entry) * n));
   }
 
   void destroy_all() noexcept { std::destroy(data(), data() + size_); }
@@ -178,7 +224,7 @@ class neighbourhood {
   // The list is full: move it to a heap block twice as large, with e
   // placed at pos. Afterwards size_ > K, which marks heap mode.
   void reallocate_with(std::uint32_t pos, Entry&& e) {
-    std::uint32_t new_cap = size_ * 2;
+    std::uint32_t new_cap = moves_on_edit ? size_ + 1 : size_ * 2;
     Entry* block = allocate(new_cap);
     Entry* old = data();
     std::uninitialized_move(old, old + pos, block);
