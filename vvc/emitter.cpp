@@ -170,6 +170,9 @@ class emitter {
          "    if (std::string(*vv_b) == vv_name) return 1;\n"
          "  return 0;\n}\n";
     s += "VV_PLUGIN_EXPORT vv::proxy* vv_plugin_proxy() { return &vv_model.host(); }\n";
+    s += "VV_PLUGIN_EXPORT const void* const* vv_plugin_error_frames(std::size_t* vv_count) {\n"
+         "  *vv_count = vv_exchange.error_frames.size();\n"
+         "  return vv_exchange.error_frames.data();\n}\n";
     s += "VV_PLUGIN_EXPORT const vv_mesh_entry* vv_plugin_meshes(std::size_t* vv_count) {\n";
     if (p_.global_meshes.empty()) {
       s += "  *vv_count = 0;\n  return nullptr;\n}\n";
@@ -185,14 +188,16 @@ class emitter {
       }
       s += "  };\n  *vv_count = " + std::to_string(p_.global_meshes.size()) + ";\n  return vv_table;\n}\n";
     }
-    s += union_entry_points();
+    s += mesh_set_entry_points();
     w_.generated(s);
   }
 
-  // The union of several global meshes (vvinterpreter --mesh A,B).
-  std::string union_entry_points() const {
+  // Entry points over all the global meshes: their union (vvinterpreter
+  // --mesh A,B) and the neighbourhood check (--check).
+  std::string mesh_set_entry_points() const {
     std::string s;
     if (p_.global_meshes.empty()) {
+      s += "VV_PLUGIN_EXPORT const char* vv_plugin_check() { return nullptr; }\n";
       s += "VV_PLUGIN_EXPORT const char* vv_plugin_union_vvm(const char* const*, std::size_t, const char*) {\n"
            "  return \"the model has no global mesh\";\n}\n";
       s += "VV_PLUGIN_EXPORT const char* vv_plugin_union_geometry(const char* const*, std::size_t, std::size_t,\n"
@@ -206,6 +211,7 @@ class emitter {
       s += "{\"" + n + "\", &" + n + "}, ";
     }
     s += "};\n";
+    s += "VV_PLUGIN_EXPORT const char* vv_plugin_check() { return vv::plugin::check(vv_exchange, vv_named_meshes); }\n";
     s += "VV_PLUGIN_EXPORT const char* vv_plugin_union_vvm(const char* const* vv_names, std::size_t vv_n,\n"
          "                                                 const char* vv_path) {\n"
          "  return vv::plugin::union_vvm(vv_exchange, vv_named_meshes, vv_names, vv_n, vv_path);\n}\n";

@@ -186,6 +186,72 @@ TEST(Lifecycle, AnErrorAlwaysNamesItsBlock) {
   EXPECT_EQ(err[0].substr(err[0].size() - 11), " (in start)") << report(r);
 }
 
+// Issue 9, item 17: `v->x` on the null vertex said "$: property access on
+// the null vertex" without a line (operator-> takes no source location);
+// the interpreter finds the line in the model's line tables.
+TEST(Lifecycle, ANullVertexErrorNamesItsLineAlsoThroughTheArrow) {
+  const std::string model = fault_models + "null_vertex.vvp";
+  test_run::result arrow = batch({"--quiet", "--steps", "0", "--end", model});
+  EXPECT_NE(arrow.status, 0) << report(arrow);
+  EXPECT_EQ(arrow.err, "vvinterpreter: " + model + ":9: $: property access on the null vertex (in end)\n")
+      << report(arrow);
+  test_run::result dollar = batch({"--quiet", "--steps", "1", "--in-process", model});
+  EXPECT_NE(dollar.status, 0) << report(dollar);
+  EXPECT_EQ(dollar.err, "vvinterpreter: " + model + ":17: $: property access on the null vertex (in step 1)\n")
+      << report(dollar);
+}
+
+// Issue 9, item 19: --check finds the broken neighbourhood after the step
+// that broke it and names the line of the edit that left it so; without
+// --check the same run goes on.
+TEST(Lifecycle, CheckStopsAtTheStepAndLineThatBrokeANeighbourhood) {
+  const std::string model = fault_models + "breaks_symmetry.vvp";
+  test_run::result checked = batch({"--quiet", "--steps", "3", "--check", model});
+  EXPECT_EQ(checked.status, 1) << report(checked);
+  EXPECT_EQ(checked.out, "step 1\nstep 2\n") << report(checked);
+  EXPECT_EQ(checked.err, "vvinterpreter: " + model + ":22: check: mesh S: vertex 1 is a neighbour of vertex 2 "
+                         "but not the other way round (last edits: vertex 2 at " + model + ":12, vertex 1 at " +
+                         model + ":22) (after step 2)\n")
+      << report(checked);
+  test_run::result unchecked = batch({"--quiet", "--steps", "3", model});
+  EXPECT_EQ(unchecked.status, 0) << report(unchecked);
+  EXPECT_EQ(unchecked.out, "step 1\nstep 2\nstep 3\n") << report(unchecked);
+}
+
+// Issue 9, item 5: a closed curve of 128 vertices was drawn as two filled
+// 128-gons and exported as two faces; now it is drawn as its outline and
+// exported as one closed `l` polyline.
+TEST(Lifecycle, ACurveIsDrawnAndExportedAsLines) {
+  std::string d = fresh_dir("curve_lines");
+  test_run::result r = batch({"--quiet", "--steps", "0", "--export", d + "curve.obj", "--screenshot",
+                              d + "curve.png", "--size", "300x300", VV_TESTS_DIR "/models/circle128.vvp"});
+  ASSERT_EQ(r.status, 0) << report(r);
+  std::ifstream obj_file(d + "curve.obj");
+  std::string obj((std::istreambuf_iterator<char>(obj_file)), std::istreambuf_iterator<char>());
+  std::vector<std::string> l_lines, f_lines;
+  for (const std::string& line : lines_of(obj)) {
+    if (line.rfind("l ", 0) == 0) l_lines.push_back(line);
+    if (line.rfind("f ", 0) == 0) f_lines.push_back(line);
+  }
+  EXPECT_TRUE(f_lines.empty()) << obj;
+  ASSERT_EQ(l_lines.size(), 1u) << obj;
+  std::istringstream indices(l_lines[0].substr(2));
+  std::vector<int> loop;
+  for (int i; indices >> i;) loop.push_back(i);
+  ASSERT_EQ(loop.size(), 129u);
+  EXPECT_EQ(loop.front(), loop.back());
+  for (std::size_t i = 0; i + 1 < loop.size(); ++i)  // around the circle, one way or the other
+    EXPECT_EQ((loop[i + 1] - loop[i] + 128) % 128 == 1 || (loop[i] - loop[i + 1] + 128) % 128 == 1, true) << i;
+  // An outline covers a thin ring of the picture: the filled disc of this
+  // size covered over a third of it.
+  image im = load_png(d + "curve.png");
+  ASSERT_TRUE(im.ok());
+  box b = object_box(im);
+  ASSERT_FALSE(b.empty());
+  EXPECT_GT(b.width(), 150) << describe(b);
+  EXPECT_LT(b.pixels, long(im.width) * im.height / 20) << describe(b);
+}
+
 // Issue 9, items 1 and 2: a vv 1.1 program sees OpenGL without including
 // it and writes 2D points with two coordinates; it draws its own red
 // triangle in the screenshot.

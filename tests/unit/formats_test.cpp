@@ -516,6 +516,62 @@ TEST(MaxFace, LongerOrbitsAreLeftOut) {
   EXPECT_EQ(rotation_set(N), rotation_set(M));
 }
 
+// Curves (issue 9, item 5): a mesh whose vertices have at most two
+// neighbours is written as polylines, not as the two sides of a polygon.
+// A closed square x0..x3 and, beside it, an open path y0-y1-y2 (given with
+// its middle vertex first, so the walk must start from an end).
+TEST(Curves, OBJHoldsClosedAndOpenPolylinesAsLLines) {
+  G::context ctx;
+  Mesh M(ctx);
+  std::vector<V> x, y;
+  const double xs[4] = {0, 1, 1, 0}, ys[4] = {0, 0, 1, 1};
+  for (int i = 0; i < 4; ++i) {
+    x.push_back(ctx.new_vertex());
+    x.back()->pos = Pt(xs[i], ys[i], 0.5);
+  }
+  for (int i = 0; i < 3; ++i) {
+    y.push_back(ctx.new_vertex());
+    y.back()->pos = Pt(3 + i, 0.25, 0);
+  }
+  for (std::size_t i = 0; i < 4; ++i) vv::make_nb(x[i], {x[(i + 3) % 4], x[(i + 1) % 4]});
+  vv::make_nb(y[0], {y[1]});
+  vv::make_nb(y[1], {y[0], y[2]});
+  vv::make_nb(y[2], {y[1]});
+  M.add(y[1]);
+  for (const V& v : x) M.add(v);
+  M.add(y[0]);
+  M.add(y[2]);
+  EXPECT_TRUE(vv::is_curve(M));
+  const std::string path = scratch_dir() + "curves.obj";
+  vv::write_mesh(M, path);
+  // Positions in iteration order: y1 x0 x1 x2 x3 y0 y2.
+  EXPECT_EQ(slurp(path),
+            "v 4 0.25 0\nv 0 0 0.5\nv 1 0 0.5\nv 1 1 0.5\nv 0 1 0.5\nv 3 0.25 0\nv 5 0.25 0\n"
+            "l 6 1 7\nl 2 5 4 3 2\n");
+  // Formats without lines refuse, and leave no file.
+  const std::string off = scratch_dir() + "curves.off";
+  std::remove(off.c_str());
+  try {
+    vv::write_mesh(M, off);
+    ADD_FAILURE() << "a curve was written to OFF";
+  } catch (const vv::error& e) {
+    EXPECT_EQ(std::string(e.what()), off + ": a curve (no vertex has more than two neighbours) is written as "
+                                           "lines, which off files cannot hold; write .obj (l lines) or .vvm");
+  }
+  EXPECT_FALSE(std::ifstream(off).good());
+}
+
+TEST(Curves, ASurfaceIsNoCurveAndKeepsItsFaces) {
+  G::context ctx;
+  Mesh M(ctx);
+  make_fan(ctx, M);
+  EXPECT_FALSE(vv::is_curve(M));
+  const std::string path = scratch_dir() + "fan_faces.obj";
+  vv::write_mesh(M, path);
+  EXPECT_EQ(count_lines_starting(slurp(path), "f "), 7u);
+  EXPECT_EQ(count_lines_starting(slurp(path), "l "), 0u);
+}
+
 TEST(MaxFace, QuadsAreLeftOutBelowFour) {
   G::context ctx;
   Mesh M(ctx);

@@ -243,6 +243,54 @@ TEST(VvmPyramid, ReadAndWriteXMLFileResolveAgainstBaseDir) {
 }
 
 // =====================================================================
+// Warnings: what a read lets through without an error
+// =====================================================================
+
+TEST(VvmWarnings, UnknownAttributesAndMissingFieldsAreSaidOncePerName) {
+  G::context ctx;
+  std::vector<std::string> said;
+  ctx.warning_sink = [&](const std::string& m) { said.push_back(m); };
+  std::string path = scratch_dir() + "warn.vvm";
+  std::ofstream(path) << "<mesh generation=\"2\" name=\"m\">\n"
+                         "  <v pos=\"0 0 0\" c=\"1\" colr=\"red\" nb=\"1\"/>\n"
+                         "  <v pos=\"1 0 0\" colr=\"blue\" nb=\"0\"/>\n"
+                         "  <e first=\"0\" second=\"1\" weight=\"2\"/>\n"
+                         "</mesh>\n";
+  G::mesh M(ctx);
+  M.readXMLFile(path, vv::where{"model.vvp", 7});
+  M.readXMLFile(path, vv::where{"model.vvp", 7});  // read again: nothing new to say
+  EXPECT_EQ(M.size(), 2u);
+  EXPECT_EQ(said, (std::vector<std::string>{
+                      path + ":2: warning: the attribute colr of <v> matches no field of the program's vertex "
+                             "and is ignored (read at model.vvp:7)",
+                      path + ":4: warning: the attribute weight of <e> matches no field of the program's "
+                             "edge records and is ignored (read at model.vvp:7)",
+                      path + ": warning: the vertex field c is missing from 1 of the 2 vertices, which keep its "
+                             "default value (read at model.vvp:7)"}));
+}
+
+TEST(VvmWarnings, AMeshFieldTheFileLacksAndACompleteFileIsSilent) {
+  G::context ctx;
+  std::vector<std::string> said;
+  ctx.warning_sink = [&](const std::string& m) { said.push_back(m); };
+  G::mesh M(ctx);
+  M.readXMLFile(pyramid_path, vv::where{"model.vvp", 3});
+  EXPECT_EQ(said, (std::vector<std::string>{
+                      pyramid_path + ": warning: the mesh field generation is not in the file and keeps its "
+                                     "default value (read at model.vvp:3)",
+                      pyramid_path + ": warning: the mesh field name is not in the file and keeps its "
+                                     "default value (read at model.vvp:3)",
+                      pyramid_path + ": warning: the vertex field c is in no vertex of the file and keeps its "
+                                     "default value (read at model.vvp:3)"}));
+  PG::context quiet;
+  bool any = false;
+  quiet.warning_sink = [&](const std::string&) { any = true; };
+  PG::mesh P(quiet);
+  P.readXMLFile(pyramid_path);
+  EXPECT_FALSE(any);
+}
+
+// =====================================================================
 // Properties
 // =====================================================================
 

@@ -33,7 +33,7 @@ int main(int argc, char** argv) {
     std::cerr << "driver: plugin ABI " << vv_plugin_abi_version() << ", expected " << VV_PLUGIN_ABI_VERSION << "\n";
     return 2;
   }
-  vv_plugin_settings settings{model_dir.c_str(), 42, 0};
+  vv_plugin_settings settings{model_dir.c_str(), 42, 0, 0};
   vv_plugin_configure(&settings);
 
   std::string error;

@@ -33,6 +33,8 @@ const char* usage_text =
     "  --view YAW PITCH   turn the screenshot's view by these degrees (default 0 0)\n"
     "  --seed S           seed of the model's random numbers (default 0)\n"
     "  --strict           reading the old state of a never-synchronised vertex is an error\n"
+    "  --check            after start and every step, check every global mesh's neighbourhoods\n"
+    "                     and stop at the first broken one, naming the line that last edited it\n"
     "  --script FILE      viewer: run commands from FILE (step N, run, rewind, end,\n"
     "                     screenshot FILE, window-screenshot FILE, export MESH FILE,\n"
     "                     rotate DX DY, zoom F, wait MS, stop, quit)\n"
@@ -101,6 +103,8 @@ parse_result parse_options(int argc, const char* const* argv) {
       o.compile_only = true;
     } else if (a == "--strict") {
       o.strict = true;
+    } else if (a == "--check") {
+      o.check = true;
     } else if (a == "--quiet") {
       o.quiet = true;
     } else if (a == "--end") {

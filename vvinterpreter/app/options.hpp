@@ -24,6 +24,7 @@ struct options {
   double view_yaw = 0, view_pitch = 0;  // --view YAW PITCH (degrees, batch screenshots)
   std::uint64_t seed = 0;     // --seed S
   bool strict = false;        // --strict
+  bool check = false;         // --check
   std::string script;         // --script FILE (viewer)
   std::string frames = "frames";  // --frames DIR (proxy.record_frame)
   std::string cache;          // --cache DIR

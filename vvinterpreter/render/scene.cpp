@@ -66,6 +66,12 @@ void mesh_drawing::update(const vv_geometry& g) {
       glm::dvec3 n = len > 0 ? normals[i] / len : glm::dvec3(0, 0, 1);
       vertices[i].normal[0] = float(n.x), vertices[i].normal[1] = float(n.y), vertices[i].normal[2] = float(n.z);
     }
+    for (std::size_t l = 0; l < g.line_count; ++l)  // a curve: its polylines' segments
+      for (std::uint32_t i = g.line_offsets[l]; i + 1 < g.line_offsets[l + 1]; ++i) {
+        std::uint32_t a = g.line_vertices[i], b = g.line_vertices[i + 1];
+        lines.push_back(std::min(a, b));
+        lines.push_back(std::max(a, b));
+      }
     // Edges shared by two faces appear twice: keep one.
     std::vector<std::pair<std::uint32_t, std::uint32_t>> pairs;
     pairs.reserve(lines.size() / 2);
@@ -110,8 +116,10 @@ void mesh_drawing::draw() const {
   glDisable(GL_LIGHTING);
   glDisableClientState(GL_NORMAL_ARRAY);
   glColor3f(0.15f, 0.17f, 0.22f);
+  if (!triangle_indices_) glLineWidth(2);  // a curve: its lines are all there is
   glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, line_buffer_);
   glDrawElements(GL_LINES, GLsizei(line_indices_), GL_UNSIGNED_INT, nullptr);
+  glLineWidth(1);
   glDisableClientState(GL_VERTEX_ARRAY);
   glBindBuffer(GL_ARRAY_BUFFER, 0);
   glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, 0);

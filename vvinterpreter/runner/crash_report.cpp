@@ -101,27 +101,35 @@ std::vector<source_frame> lookup(const std::string& file, const std::vector<std:
 
 }  // namespace
 
-std::vector<source_frame> model_stack(const child_end& end) {
-  const crash_info& c = end.crash;
-  std::vector<mapping> maps = parse_maps(c.maps);
-  // The frames before the faulting instruction are the handler's own.
-  std::size_t first = 0;
-  for (std::size_t i = 0; i < c.frames.size(); ++i)
-    if (c.frames[i] == c.pc) first = i;
+std::vector<source_frame> model_frames(const std::vector<std::uintptr_t>& code_addresses,
+                                       const std::vector<std::string>& maps_lines,
+                                       const std::map<std::string, std::string>& modules) {
+  std::vector<mapping> maps = parse_maps(maps_lines);
   std::vector<source_frame> out;
-  for (std::size_t i = first; i < c.frames.size(); ++i) {
-    // A return address points after its call: look up the call itself.
-    std::uintptr_t a = c.frames[i] - (i == first && c.frames[i] == c.pc ? 0 : 1);
+  for (std::uintptr_t a : code_addresses) {
     for (const mapping& m : maps) {
       if (a < m.start || a >= m.end) continue;
-      auto module = end.modules.find(m.path);
-      if (module == end.modules.end()) break;  // not a model: vvlib inlined into it is, the rest is not
+      auto module = modules.find(m.path);
+      if (module == modules.end()) break;  // not a model: vvlib inlined into it is, the rest is not
       std::vector<source_frame> found = lookup(module->second, {a - m.start + m.offset});
       out.insert(out.end(), found.begin(), found.end());
       break;
     }
   }
   return out;
+}
+
+std::vector<source_frame> model_stack(const child_end& end) {
+  const crash_info& c = end.crash;
+  // The frames before the faulting instruction are the handler's own.
+  std::size_t first = 0;
+  for (std::size_t i = 0; i < c.frames.size(); ++i)
+    if (c.frames[i] == c.pc) first = i;
+  std::vector<std::uintptr_t> calls;
+  for (std::size_t i = first; i < c.frames.size(); ++i)
+    // A return address points after its call: look up the call itself.
+    calls.push_back(c.frames[i] - (i == first && c.frames[i] == c.pc ? 0 : 1));
+  return model_frames(calls, c.maps, end.modules);
 }
 
 std::string activity_phrase(const child_activity& a) {

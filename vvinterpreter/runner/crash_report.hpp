@@ -3,6 +3,7 @@
 // (read from the plugin's line tables with addr2line).
 #pragma once
 
+#include <map>
 #include <string>
 #include <vector>
 
@@ -19,6 +20,13 @@ struct source_frame {
 //! The frames of a crash from the innermost out, the model's .vvp frames
 //! only (frames of vvlib, the C++ library and the host are left out).
 std::vector<source_frame> model_stack(const child_end& end);
+
+//! The model's .vvp frames at these code addresses (calls, not return
+//! addresses), given the process's /proc/PID/maps lines and the loaded
+//! copies of plugins → the files they came from.
+std::vector<source_frame> model_frames(const std::vector<std::uintptr_t>& code_addresses,
+                                       const std::vector<std::string>& maps_lines,
+                                       const std::map<std::string, std::string>& modules);
 
 //! "in step 3", "in start", "while loading the model (a global initialiser)".
 std::string activity_phrase(const child_activity& a);

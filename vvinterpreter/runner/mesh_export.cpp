@@ -20,7 +20,10 @@ std::string export_polygons(const vv_geometry& g, const std::string& path, const
     std::vector<std::vector<std::size_t>> faces(g.face_count);
     for (std::size_t f = 0; f < g.face_count; ++f)
       faces[f].assign(g.face_vertices + g.face_offsets[f], g.face_vertices + g.face_offsets[f + 1]);
-    vv::write_polygon_file(path, points, std::move(faces));
+    std::vector<std::vector<std::size_t>> lines(g.line_count);
+    for (std::size_t l = 0; l < g.line_count; ++l)
+      lines[l].assign(g.line_vertices + g.line_offsets[l], g.line_vertices + g.line_offsets[l + 1]);
+    vv::write_polygon_file(path, points, std::move(faces), lines);
   } catch (const std::exception& e) {
     return e.what();
   }

@@ -113,6 +113,8 @@ std::unique_ptr<plugin> plugin::open(const std::string& path, std::string& error
   bind(p->meshes, "vv_plugin_meshes");
   bind(p->union_vvm, "vv_plugin_union_vvm");
   bind(p->union_geometry, "vv_plugin_union_geometry");
+  bind(p->error_frames, "vv_plugin_error_frames");
+  bind(p->check, "vv_plugin_check");
   if (!ok) return nullptr;
   return p;
 }

@@ -28,8 +28,12 @@ class plugin {
   const vv_mesh_entry* (*meshes)(std::size_t*) = nullptr;
   const char* (*union_vvm)(const char* const*, std::size_t, const char*) = nullptr;
   const char* (*union_geometry)(const char* const*, std::size_t, std::size_t, vv_geometry*) = nullptr;
+  const void* const* (*error_frames)(std::size_t*) = nullptr;
+  const char* (*check)() = nullptr;
 
   const std::string& path() const { return path_; }
+  //! The private copy that is loaded (what /proc/self/maps names).
+  const std::string& loaded_copy() const { return copy_; }
 
  private:
   plugin() = default;

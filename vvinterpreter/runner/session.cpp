@@ -1,6 +1,10 @@
 #include "runner/session.hpp"
 
 #include <chrono>
+#include <cstdint>
+#include <fstream>
+
+#include "runner/crash_report.hpp"
 
 #include "runner/fault_guard.hpp"
 
@@ -10,9 +14,35 @@ std::unique_ptr<session> session::load(const std::string& plugin_path, const ses
                                        std::string& error) {
   std::unique_ptr<plugin> p = plugin::open(plugin_path, error);
   if (!p) return nullptr;
-  vv_plugin_settings settings{s.model_dir.c_str(), s.seed, s.strict ? 1 : 0};
+  vv_plugin_settings settings{s.model_dir.c_str(), s.seed, s.strict ? 1 : 0, s.check ? 1 : 0};
   p->configure(&settings);
-  return std::unique_ptr<session>(new session(std::move(p)));
+  return std::unique_ptr<session>(new session(std::move(p), s.check));
+}
+
+namespace {
+
+std::vector<std::string> own_maps() {
+  std::ifstream in("/proc/self/maps");
+  std::vector<std::string> lines;
+  for (std::string l; std::getline(in, l);) lines.push_back(l);
+  return lines;
+}
+
+}  // namespace
+
+// An error raised without a source location (`v->pos` on the null vertex)
+// came with the addresses it was raised at: its .vvp line is the innermost
+// frame of the model's own source.
+std::string session::locate(const std::string& message) const {
+  std::size_t n = 0;
+  const void* const* frames = plugin_->error_frames(&n);
+  if (n == 0) return message;
+  std::vector<std::uintptr_t> calls;
+  for (std::size_t i = 0; i < n; ++i) calls.push_back(reinterpret_cast<std::uintptr_t>(frames[i]) - 1);
+  std::vector<source_frame> found =
+      model_frames(calls, own_maps(), {{plugin_->loaded_copy(), plugin_->path()}});
+  if (found.empty()) return message;
+  return found.front().file + ":" + std::to_string(found.front().line) + ": " + message;
 }
 
 bool session::run(const char* block, plugin::block_fn fn, unsigned step, bool announce) {
@@ -20,7 +50,7 @@ bool session::run(const char* block, plugin::block_fn fn, unsigned step, bool an
   const char* e = fn();
   fault_guard::finish(announce);
   if (e) {
-    error_ = e;
+    error_ = locate(e);
     // Always said, even when the message happens to contain the word.
     error_ += " (in " + (step ? std::string(block) + " " + std::to_string(step) : std::string(block)) + ")";
     return false;
@@ -28,7 +58,15 @@ bool session::run(const char* block, plugin::block_fn fn, unsigned step, bool an
   return true;
 }
 
-bool session::start() { return run("start", plugin_->start); }
+bool session::check_neighbourhoods(const std::string& after) {
+  if (!check_) return true;
+  const char* broken = plugin_->check();
+  if (!broken) return true;
+  error_ = std::string(broken) + " (after " + after + ")";
+  return false;
+}
+
+bool session::start() { return run("start", plugin_->start) && check_neighbourhoods("start"); }
 bool session::end() { return run("end", plugin_->end); }
 bool session::reread() { return run("reread", plugin_->reread); }
 // Drawing is not timed (it is not announced): it runs every frame.
@@ -43,7 +81,7 @@ bool session::step() {
   bool ok = run("step", plugin_->step, steps_ + 1);
   last_step_ms_ = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t).count();
   if (ok) ++steps_;
-  return ok;
+  return ok && check_neighbourhoods("step " + std::to_string(steps_));
 }
 
 void session::close() {

@@ -16,6 +16,7 @@ struct session_settings {
   std::string model_dir;  // relative paths in the program resolve against it
   std::uint64_t seed = 0;
   bool strict = false;    // reading a never-synchronised old state is an error
+  bool check = false;     // check the neighbourhoods after start and every step
 };
 
 class session {
@@ -48,15 +49,20 @@ class session {
   bool has_block(const char* name) const { return plugin_->has_block(name) != 0; }
 
  private:
-  explicit session(std::unique_ptr<plugin> p) : plugin_(std::move(p)) {}
+  session(std::unique_ptr<plugin> p, bool check) : plugin_(std::move(p)), check_(check) {}
   //! Runs a block as the named activity (runner/fault_guard.hpp).
   bool run(const char* block, plugin::block_fn fn, unsigned step = 0, bool announce = true);
+  //! --check: false with the error set when a neighbourhood is broken.
+  bool check_neighbourhoods(const std::string& after);
+  //! The message with the .vvp line of an error that came without one.
+  std::string locate(const std::string& message) const;
 
   std::unique_ptr<plugin> plugin_;
   unsigned steps_ = 0;
   double last_step_ms_ = 0;
   std::string error_;
   bool closed_ = false;
+  bool check_ = false;
 };
 
 }  // namespace vvi

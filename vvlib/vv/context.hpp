@@ -21,8 +21,11 @@
 
 #include <algorithm>
 #include <cstdint>
+#include <cstdio>
+#include <functional>
 #include <memory>
 #include <random>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -89,6 +92,33 @@ class context {
   std::string base_dir;
   //! Reading the old state of a never-synchronised vertex is an error.
   bool strict_old_state = false;
+  //! Where the library's warnings go (a host may collect them); stderr when unset.
+  std::function<void(const std::string&)> warning_sink;
+
+  //! Remember where each neighbourhood was last edited (vvinterpreter
+  //! --check names that line when a neighbourhood is found broken).
+  void track_edits(bool on) { tracking_edits_ = on; }
+  void note_edit(std::uint32_t id, const where& w) {
+    if (!tracking_edits_) return;
+    if (id >= last_edit_.size()) last_edit_.resize(std::max<std::size_t>(next_slot_, id + 1));
+    last_edit_[id] = {w, ++edits_};
+  }
+  struct edit_mark {
+    where at;               //!< file null: not edited while tracked
+    std::uint64_t seq = 0;  //!< edits are numbered in the order they were made
+  };
+  //! Where v's neighbourhood was last edited.
+  edit_mark last_edit(std::uint32_t id) const noexcept {
+    return id < last_edit_.size() ? last_edit_[id] : edit_mark{};
+  }
+
+  //! Says message once per key over the context's life, so that a file read
+  //! every step warns once.
+  void warn_once(const std::string& key, const std::string& message) {
+    if (!warned_.insert(key).second) return;
+    if (warning_sink) warning_sink(message);
+    else std::fprintf(stderr, "%s\n", message.c_str());
+  }
 
   // ---- slot access, used by the algebra (ids come from handles) ----
   std::uint32_t& refs(std::uint32_t id) noexcept { return at(id).refs[id & mask]; }
@@ -155,6 +185,10 @@ class context {
   unsigned gc_pauses_ = 0;
   std::mt19937_64 rng_{5489u};
   proxy proxy_;
+  std::set<std::string> warned_;  // keys of the warnings said
+  bool tracking_edits_ = false;
+  std::vector<edit_mark> last_edit_;  // by slot, while tracking
+  std::uint64_t edits_ = 0;
   edge_props empty_record_{};
 
   static constexpr std::size_t min_gc_threshold = 1u << 14;

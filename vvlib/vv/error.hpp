@@ -6,6 +6,12 @@
 #include <stdexcept>
 #include <string>
 #include <utility>
+#include <vector>
+
+#if __has_include(<execinfo.h>)
+#include <execinfo.h>
+#define VV_HAVE_BACKTRACE 1
+#endif
 
 namespace vv {
 
@@ -29,7 +35,9 @@ class error : public std::runtime_error {
  public:
   error(const where& w, const std::string& operation, const std::string& problem)
       : std::runtime_error(compose(w, operation, problem)),
-        file_(w.file ? w.file : ""), line_(w.line) {}
+        file_(w.file ? w.file : ""), line_(w.line) {
+    if (!w.file) keep_frames();
+  }
 
   //! An error in a data file (line 0: the file as a whole).
   error(std::string file, int line, const std::string& problem)
@@ -39,8 +47,19 @@ class error : public std::runtime_error {
 
   const std::string& file() const noexcept { return file_; }
   int line() const noexcept { return line_; }
+  //! Return addresses where an error without a source location was raised
+  //! (`v->pos` on the null vertex cannot name its line): a host finds the
+  //! .vvp line in the model's line tables (vvinterpreter does).
+  const std::vector<void*>& frames() const noexcept { return frames_; }
 
  private:
+  void keep_frames() {
+#ifdef VV_HAVE_BACKTRACE
+    frames_.resize(48);
+    frames_.resize(static_cast<std::size_t>(::backtrace(frames_.data(), static_cast<int>(frames_.size()))));
+#endif
+  }
+
   static std::string compose(const where& w, const std::string& operation,
                              const std::string& problem) {
     std::ostringstream os;
@@ -51,6 +70,7 @@ class error : public std::runtime_error {
 
   std::string file_;
   int line_;
+  std::vector<void*> frames_;
 };
 
 //! Throws vv::error with the problem text make_problem() builds. Kept out

@@ -17,6 +17,10 @@
 //   const char* vv_plugin_union_geometry(const char* const* names, size_t n,
 //                                        size_t max_face, vv_geometry* out);
 //                                         // the union of several global meshes
+//   const char* vv_plugin_check(void);     // NULL, or the first broken neighbourhood
+//   const void* const* vv_plugin_error_frames(size_t* count);
+//                                         // where the last error without a
+//                                         // source location was raised
 #pragma once
 
 #include <cstddef>
@@ -32,10 +36,12 @@
 #include "io/positions.hpp"
 #include "io/vvm.hpp"
 #include "mesh.hpp"
+#include "neighbourhood_check.hpp"
 #include "orbits.hpp"
+#include "polylines.hpp"
 #include "proxy.hpp"
 
-#define VV_PLUGIN_ABI_VERSION 2
+#define VV_PLUGIN_ABI_VERSION 3
 #define VV_PLUGIN_EXPORT extern "C" __attribute__((visibility("default")))
 
 extern "C" {
@@ -45,16 +51,21 @@ struct vv_plugin_settings {
   const char* model_dir;   //!< relative paths resolve against it (NULL/"": the .vvp's folder)
   std::uint64_t seed;      //!< seeds the model's random generator
   int strict_old_state;    //!< reading a never-synchronised old state is an error
+  int check;               //!< track edits for vv_plugin_check
 };
 
-//! A mesh's polygons for drawing and for polygon file export; valid until
-//! the next call for the same model.
+//! A mesh's polygons, or a curve's polylines (vv/polylines.hpp), for
+//! drawing and for polygon file export; valid until the next call for the
+//! same model.
 struct vv_geometry {
   std::size_t vertex_count;
   const double* positions;           //!< 3 per vertex; NULL without a `pos` property
   std::size_t face_count;
   const std::uint32_t* face_offsets; //!< face i is face_vertices[offsets[i] .. offsets[i+1])
   const std::uint32_t* face_vertices;
+  std::size_t line_count;            //!< polylines (a closed one repeats its first vertex)
+  const std::uint32_t* line_offsets; //!< line i is line_vertices[offsets[i] .. offsets[i+1])
+  const std::uint32_t* line_vertices;
 };
 
 //! One global mesh of the program.
@@ -87,6 +98,11 @@ const vv_mesh_entry* vv_plugin_meshes(std::size_t* count);
 const char* vv_plugin_union_vvm(const char* const* names, std::size_t count, const char* path);
 const char* vv_plugin_union_geometry(const char* const* names, std::size_t count, std::size_t max_face,
                                      vv_geometry* out);
+//! Return addresses of the last error whose message has no source location.
+const void* const* vv_plugin_error_frames(std::size_t* count);
+//! The first broken neighbourhood of any global mesh, with the lines that
+//! last edited it, or NULL (vvinterpreter --check, after start and each step).
+const char* vv_plugin_check(void);
 
 }  // extern "C"
 
@@ -95,17 +111,24 @@ namespace vv::plugin {
 //! What the plugin keeps between calls for the host.
 struct exchange {
   std::string last_error;
+  std::vector<void*> error_frames;  //!< vv::error::frames() of the last error
   std::vector<double> positions;
   std::vector<std::uint32_t> face_offsets, face_vertices;
+  std::vector<std::uint32_t> line_offsets, line_vertices;
   std::shared_ptr<void> union_mesh;  //!< the last union_geometry's mesh
+  std::vector<char> was_symmetric;   //!< per global mesh, at the last check
 };
 
 //! Runs fn, turning any exception into the returned message (or NULL).
 template <class Fn>
 const char* guarded(exchange& x, Fn&& fn) noexcept {
+  x.error_frames.clear();
   try {
     fn();
     return nullptr;
+  } catch (const vv::error& e) {
+    x.last_error = e.what();
+    x.error_frames = e.frames();
   } catch (const std::exception& e) {
     x.last_error = e.what();
   } catch (...) {
@@ -121,6 +144,7 @@ void configure(context<Tr>& ctx, const vv_plugin_settings& s, const char* source
   ctx.base_dir = s.model_dir && *s.model_dir ? s.model_dir : source_dir;
   ctx.seed(s.seed);
   ctx.strict_old_state = s.strict_old_state != 0;
+  ctx.track_edits(s.check != 0);
   // Programs written for vv 1.1 draw from the C library's generators:
   // seed them too, so every run with the same seed is the same.
   std::srand(static_cast<unsigned>(s.seed));
@@ -138,6 +162,8 @@ const char* geometry(exchange& x, const mesh<Tr>& m, std::size_t max_face, vv_ge
     x.positions.clear();
     x.face_offsets.assign(1, 0u);
     x.face_vertices.clear();
+    x.line_offsets.assign(1, 0u);
+    x.line_vertices.clear();
     using VP = typename Tr::vertex_props;
     if constexpr (detail::has_pos<VP>::value) {
       for (std::uint32_t id : m.slots()) {
@@ -147,16 +173,26 @@ const char* geometry(exchange& x, const mesh<Tr>& m, std::size_t max_face, vv_ge
       }
     }
     std::size_t limit = max_face ? max_face : std::numeric_limits<std::size_t>::max();
-    for (const auto& face : orbits(m, limit).faces) {
-      if (face.size() < 3) continue;
-      x.face_vertices.insert(x.face_vertices.end(), face.begin(), face.end());
-      x.face_offsets.push_back(static_cast<std::uint32_t>(x.face_vertices.size()));
+    if (is_curve(m)) {
+      for (const auto& line : polylines(m)) {
+        x.line_vertices.insert(x.line_vertices.end(), line.begin(), line.end());
+        x.line_offsets.push_back(static_cast<std::uint32_t>(x.line_vertices.size()));
+      }
+    } else {
+      for (const auto& face : orbits(m, limit).faces) {
+        if (face.size() < 3) continue;
+        x.face_vertices.insert(x.face_vertices.end(), face.begin(), face.end());
+        x.face_offsets.push_back(static_cast<std::uint32_t>(x.face_vertices.size()));
+      }
     }
     out->vertex_count = m.size();
     out->positions = detail::has_pos<VP>::value ? x.positions.data() : nullptr;
     out->face_count = x.face_offsets.size() - 1;
     out->face_offsets = x.face_offsets.data();
     out->face_vertices = x.face_vertices.data();
+    out->line_count = x.line_offsets.size() - 1;
+    out->line_offsets = x.line_offsets.data();
+    out->line_vertices = x.line_vertices.data();
   });
 }
 
@@ -195,6 +231,27 @@ const char* union_geometry(exchange& x, const named_mesh<Tr> (&all)[N], const ch
   const char* e = guarded(x, [&] { x.union_mesh = std::make_shared<mesh<Tr>>(union_of(all, names, count)); });
   if (e) return e;
   return geometry(x, *std::static_pointer_cast<mesh<Tr>>(x.union_mesh), max_face, out);
+}
+
+//! vv_plugin_check: a mesh that was symmetric at the last check must still
+//! be (a model may keep one-way neighbourhoods, as cell centres to walls).
+template <class Tr, std::size_t N>
+const char* check(exchange& x, const named_mesh<Tr> (&all)[N]) noexcept {
+  std::string found;
+  const char* e = guarded(x, [&] {
+    x.was_symmetric.resize(N, 0);
+    for (std::size_t i = 0; i < N && found.empty(); ++i) {
+      broken_neighbourhood broken = first_broken_neighbourhood(*all[i].m, x.was_symmetric[i] != 0);
+      if (!broken.problem.empty()) {
+        if (broken.at.file) found = std::string(broken.at.file) + ":" + std::to_string(broken.at.line) + ": ";
+        found += std::string("check: mesh ") + all[i].name + ": " + broken.problem;
+      }
+      x.was_symmetric[i] = broken.problem.empty() && is_symmetric(*all[i].m);
+    }
+  });
+  if (e || found.empty()) return e;
+  x.last_error = found;
+  return x.last_error.c_str();
 }
 
 }  // namespace vv::plugin

@@ -44,10 +44,12 @@ nb_view<Tr> view(const old_vertex<Tr>& v, const char*, const where&) noexcept {
 template <class Tr>
 const vertex<Tr>& edit_target(const vertex<Tr>& v, const char* op, const where& w) {
   if (!v) raise(w, op, [] { return std::string("the target is the null vertex"); });
+  v.ctx()->note_edit(v.slot(), w);
   return v;
 }
 template <class Tr>
-vertex<Tr> edit_target(const old_vertex<Tr>& v, const char*, const where&) {
+vertex<Tr> edit_target(const old_vertex<Tr>& v, const char*, const where& w) {
+  v.ctx()->note_edit(v.slot(), w);
   return v.current();
 }
 

@@ -5,7 +5,8 @@
 // keep doubles exact (OpenMesh 9's writers and readers round coordinates to
 // float). A written polygon file lists the members in iteration order and
 // the face orbits (vv/orbits.hpp) as faces; orbits longer than max_face are
-// holes and left out.
+// holes and left out. A curve (vv/polylines.hpp) is written as polylines,
+// which of the polygon formats only OBJ can hold (`l` lines).
 #pragma once
 
 #include <CGAL/IO/polygon_soup_io.h>
@@ -13,12 +14,14 @@
 
 #include <array>
 #include <cstdint>
+#include <cstdio>
 #include <limits>
 #include <sstream>
 #include <string>
 #include <vector>
 
 #include "../orbits.hpp"
+#include "../polylines.hpp"
 #include "files.hpp"
 #include "from_faces.hpp"
 #include "positions.hpp"
@@ -41,6 +44,31 @@ inline bool is_polygon_format(const std::string& ext) {
 [[noreturn]] inline void unknown_format(const std::string& path) {
   throw error(path, 0, "unknown mesh format \"" + io::extension_of(path) +
                            "\" (known: .vvm .obj .off .ply .stl)");
+}
+
+// OBJ with polylines (CGAL's writers know faces only): `v` lines, then
+// faces, then `l` lines; indices count from 1.
+inline std::string obj_text(const std::vector<std::array<double, 3>>& points,
+                            const std::vector<std::vector<std::size_t>>& faces,
+                            const std::vector<std::vector<std::size_t>>& lines) {
+  std::string out;
+  char number[32];
+  for (const auto& p : points) {
+    out += "v";
+    for (double c : p) {
+      std::snprintf(number, sizeof number, " %.17g", c);
+      out += number;
+    }
+    out += "\n";
+  }
+  auto indices = [&](char kind, const std::vector<std::size_t>& list) {
+    out += kind;
+    for (std::size_t i : list) out += " " + std::to_string(i + 1);
+    out += "\n";
+  };
+  for (const auto& f : faces) indices('f', f);
+  for (const auto& l : lines) indices('l', l);
+  return out;
 }
 
 // A polygon has a fan of triangles from its first corner (for STL).
@@ -75,12 +103,21 @@ void read_mesh(mesh<Tr>& m, const std::string& path) {
 }
 
 //! Writes a polygon file (.obj .off .ply .stl by extension), atomically:
-//! points and faces as indices into them (STL gets fans of triangles).
+//! points and faces as indices into them (STL gets fans of triangles), and
+//! polylines (OBJ only: other formats refuse them).
 inline void write_polygon_file(const std::string& path,
                                const std::vector<std::array<double, 3>>& points,
-                               std::vector<std::vector<std::size_t>> faces) {
+                               std::vector<std::vector<std::size_t>> faces,
+                               const std::vector<std::vector<std::size_t>>& lines = {}) {
   std::string ext = io::extension_of(path);
   if (!detail::is_polygon_format(ext)) detail::unknown_format(path);
+  if (!lines.empty()) {
+    if (ext != ".obj")
+      throw error(path, 0, "a curve (no vertex has more than two neighbours) is written as lines, which " +
+                               ext.substr(1) + " files cannot hold; write .obj (l lines) or .vvm");
+    io::write_file_atomically(path, detail::obj_text(points, faces, lines));
+    return;
+  }
   std::vector<detail::soup_point> soup;
   soup.reserve(points.size());
   for (const auto& p : points) soup.emplace_back(p[0], p[1], p[2]);
@@ -120,6 +157,7 @@ void write_mesh(const mesh<Tr>& m, const std::string& path, const export_options
     points.push_back(p);
   }
   std::vector<std::vector<std::size_t>> faces;
+  if (is_curve(m)) return write_polygon_file(path, points, std::move(faces), polylines(m));
   for (const auto& orbit : orbits(m, opt.max_face).faces)
     if (orbit.size() >= 3) faces.emplace_back(orbit.begin(), orbit.end());
   write_polygon_file(path, points, std::move(faces));

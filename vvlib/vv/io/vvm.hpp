@@ -12,6 +12,8 @@
 #include <cstring>
 #include <functional>
 #include <limits>
+#include <map>
+#include <set>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -43,16 +45,63 @@ bool set_field(P& props, const char* name, const char* text, Fail&& fail) {
   return found;
 }
 
+// What a read let through that a learner would want to hear of: attributes
+// no field takes, fields the file never gives. Each has a key, so that it is
+// said once however often the file is read.
+struct vvm_notes {
+  std::vector<std::pair<std::string, std::string>> said;  // key, message
+  std::set<std::string> keys;
+  void add(std::string key, std::string message) {
+    if (keys.insert(key).second) said.emplace_back(std::move(key), std::move(message));
+  }
+};
+
+inline std::string kind_of(const char* element) {
+  return std::strcmp(element, "v") == 0 ? "vertex" : std::strcmp(element, "e") == 0 ? "edge records" : "mesh";
+}
+
+// Sets the fields of props from the attributes of node (but those in skip);
+// counts, per field, the nodes that gave it.
 template <class P>
 void set_fields_from(P& props, const pugi::xml_node& node, const io::text_file& file,
-                     const char* skip[], const std::string& who) {
+                     const char* skip[], const std::string& who, const char* element,
+                     std::map<std::string, std::size_t>& given, vvm_notes& notes) {
   for (pugi::xml_attribute a : node.attributes()) {
     bool skipped = false;
     for (const char** s = skip; *s; ++s) skipped = skipped || std::strcmp(*s, a.name()) == 0;
     if (skipped) continue;
-    set_field(props, a.name(), a.value(),
-              [&](const std::string& problem) { file.fail(node.offset_debug(), who + ": " + problem); });
+    bool known = set_field(props, a.name(), a.value(), [&](const std::string& problem) {
+      file.fail(node.offset_debug(), who + ": " + problem);
+    });
+    if (known) {
+      ++given[a.name()];
+      continue;
+    }
+    notes.add(file.name() + "|unknown|" + element + "|" + a.name(),
+              file.name() + ":" + std::to_string(file.line_at(node.offset_debug())) +
+                  ": warning: the attribute " + a.name() + " of <" + element +
+                  "> matches no field of the program's " + kind_of(element) + " and is ignored");
   }
+}
+
+// A field of P that fewer than `of` elements gave keeps its default there.
+template <class P>
+void note_missing_fields(const io::text_file& file, const char* what, const char* plural,
+                         const std::map<std::string, std::size_t>& given, std::size_t of,
+                         vvm_notes& notes) {
+  if (of == 0) return;
+  P probe{};
+  for_each_field(probe, [&](const char* field, const auto&) {
+    auto it = given.find(field);
+    std::size_t n = it == given.end() ? 0 : it->second;
+    if (n == of) return;
+    std::string head = file.name() + ": warning: the " + what + " field " + field;
+    std::string tail = n == 0 ? (of == 1 ? " is not in the file and keeps its default value"
+                                         : " is in no " + std::string(what) + " of the file and keeps its default value")
+                              : " is missing from " + std::to_string(of - n) + " of the " + std::to_string(of) +
+                                    " " + plural + ", which keep its default value";
+    notes.add(file.name() + "|missing|" + what + "|" + field, head + tail);
+  });
 }
 
 // What pugixml lets through but XML (or the format) forbids: text outside
@@ -122,8 +171,11 @@ inline std::uint32_t parse_index(const std::string& token, std::size_t count,
 
 //! Replaces the contents and properties of m with the .vvm text (name is
 //! used in error messages). New vertices are created in file order.
+//! What the file let through without a word is added to notes when given.
 template <class Tr>
-void parse_vvm(mesh<Tr>& m, const io::text_file& file) {
+void parse_vvm(mesh<Tr>& m, const io::text_file& file, detail::vvm_notes* notes = nullptr) {
+  detail::vvm_notes ignored;
+  detail::vvm_notes& said = notes ? *notes : ignored;
   using VP = typename Tr::vertex_props;
   using EP = typename Tr::edge_props;
   using MP = typename Tr::mesh_props;
@@ -147,7 +199,8 @@ void parse_vvm(mesh<Tr>& m, const io::text_file& file) {
 
   MP mesh_props{};
   static const char* no_skip[] = {nullptr};
-  detail::set_fields_from(mesh_props, root, file, no_skip, "mesh");
+  std::map<std::string, std::size_t> mesh_given, vertex_given, edge_given;
+  detail::set_fields_from(mesh_props, root, file, no_skip, "mesh", "mesh", mesh_given, said);
 
   std::vector<pugi::xml_node> vs, es;
   for (pugi::xml_node n : root.children()) {
@@ -166,7 +219,7 @@ void parse_vvm(mesh<Tr>& m, const io::text_file& file) {
   for (std::size_t i = 0; i < count; ++i) {
     std::string who = "vertex " + std::to_string(i);
     auto fail = [&](const std::string& problem) { file.fail(vs[i].offset_debug(), who + ": " + problem); };
-    detail::set_fields_from(props[i], vs[i], file, v_skip, who);
+    detail::set_fields_from(props[i], vs[i], file, v_skip, who, "v", vertex_given, said);
     pugi::xml_attribute nb = vs[i].attribute("nb");
     if (!nb) fail("no nb attribute (write nb=\"\" for a vertex without neighbours)");
     std::istringstream tokens(nb.value());
@@ -210,9 +263,12 @@ void parse_vvm(mesh<Tr>& m, const io::text_file& file) {
     if (r.symmetric && !adjacent(r.second, r.first))
       fail("symmetric, but vertex " + std::to_string(r.first) + " is not a neighbour of vertex " +
            std::to_string(r.second));
-    detail::set_fields_from(r.value, e, file, e_skip, "edge");
+    detail::set_fields_from(r.value, e, file, e_skip, "edge", "e", edge_given, said);
     records.push_back(std::move(r));
   }
+
+  detail::note_missing_fields<MP>(file, "mesh", "meshes", mesh_given, 1, said);
+  detail::note_missing_fields<VP>(file, "vertex", "vertices", vertex_given, count, said);
 
   // Everything is valid: build the new contents, then swap them in.
   mesh<Tr> fresh(*ctx);
@@ -236,8 +292,8 @@ void parse_vvm(mesh<Tr>& m, const io::text_file& file) {
 
 //! Reads a .vvm file into m (see parse_vvm).
 template <class Tr>
-void read_vvm(mesh<Tr>& m, const std::string& path) {
-  parse_vvm(m, io::read_text_file(path));
+void read_vvm(mesh<Tr>& m, const std::string& path, detail::vvm_notes* notes = nullptr) {
+  parse_vvm(m, io::read_text_file(path), notes);
 }
 
 //! The .vvm text of a mesh.
@@ -311,11 +367,14 @@ void write_vvm(const mesh<Tr>& m, const std::string& path) {
 
 template <class Tr>
 void mesh<Tr>::readXMLFile(const std::string& path, where w) {
+  detail::vvm_notes notes;
   try {
-    read_vvm(*this, io::resolve(ctx_ ? ctx_->base_dir : std::string(), path));
+    read_vvm(*this, io::resolve(ctx_ ? ctx_->base_dir : std::string(), path), &notes);
   } catch (const error& e) {
     throw error(w, "readXMLFile", e.what());
   }
+  std::string from = w.file ? std::string(" (read at ") + w.file + ":" + std::to_string(w.line) + ")" : "";
+  for (const auto& [key, message] : notes.said) ctx_->warn_once(key, message + from);
 }
 
 template <class Tr>
