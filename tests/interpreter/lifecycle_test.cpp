@@ -252,6 +252,18 @@ TEST(Lifecycle, ACurveIsDrawnAndExportedAsLines) {
   EXPECT_LT(b.pixels, long(im.width) * im.height / 20) << describe(b);
 }
 
+// Issue 9, item 4: a model reads OBJ (OFF, PLY, STL) with readFile, as it
+// reads .vvm, without including anything; errors name the .vvp line.
+TEST(Lifecycle, AModelReadsPolygonFilesWithReadFile) {
+  const std::string model = VV_TESTS_DIR "/models/reads_obj.vvp";
+  test_run::result r = batch({"--quiet", model});
+  EXPECT_EQ(r.out, "6 vertices, 7 edges\n") << report(r);
+  EXPECT_NE(r.status, 0) << report(r);
+  EXPECT_EQ(r.err, "vvinterpreter: " + model + ":14: readFile: " VV_TESTS_DIR
+                   "/models/missing.ply: cannot open file: No such file or directory (in start)\n")
+      << report(r);
+}
+
 // Issue 9, items 1 and 2: a vv 1.1 program sees OpenGL without including
 // it and writes 2D points with two coordinates; it draws its own red
 // triangle in the screenshot.

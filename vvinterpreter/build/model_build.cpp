@@ -121,6 +121,13 @@ std::string vvlib_include_dir() {
   return config::build_tree_include;
 }
 
+std::string vvlib_library_dir() {
+  fs::path bin = executable_dir();
+  fs::path installed = bin.parent_path() / "lib";
+  if (vvlib_include_dir() != config::build_tree_include) return installed.string();
+  return config::build_tree_lib;
+}
+
 bool is_plugin_file(const std::string& path) {
   // Only a regular file can be a plugin; peeking into a pipe would eat the
   // beginning of a model given as <(...).
@@ -252,8 +259,11 @@ build_result build_model(const std::string& path, const build_settings& s) {
   std::vector<std::string> argv = {config::cxx_compiler};
   argv.insert(argv.end(), flags.begin(), flags.end());
   if (!pch.empty()) argv.insert(argv.begin() + 1, {"-I", pch});
+  // The polygon formats come compiled, from vv_formats (M.readFile("x.obj")).
+  std::string lib = vvlib_library_dir();
   argv.insert(argv.end(), {"-Wall", "-Wextra", "-I", model_dir, "-shared", "-MD", "-MF", work + "/model.d",
-                           "-o", work + "/model.so", work + "/model.cpp", "-lpugixml", "-lGL"});
+                           "-o", work + "/model.so", work + "/model.cpp", "-L", lib, "-Wl,-rpath," + lib,
+                           "-lvv_formats", "-lpugixml", "-lGL"});
   process_result c = run_process(argv);
   r.compile_ms = ms_since(t1);
   std::string about_model = compiler_messages(c.output, include, t.cpp);

@@ -44,6 +44,8 @@ bool is_plugin_file(const std::string& path);
 //! The include directory of vvlib models are compiled against (the build
 //! tree's, or the installed one when running from the install prefix).
 std::string vvlib_include_dir();
+//! The folder of the vv_formats library models link, beside those headers.
+std::string vvlib_library_dir();
 
 
 }  // namespace vvi

@@ -154,6 +154,11 @@ class mesh : public Tr::mesh_props {
   void readXMLFile(const std::string& path, where w = where::here());
   //! `M.writeXMLFile(path)`: save M as a .vvm file (vv/io/vvm.hpp).
   void writeXMLFile(const std::string& path, where w = where::here()) const;
+  //! `M.readFile(path)`: replace M by a mesh file, the format chosen by
+  //! its extension: .vvm, .obj, .off, .ply or .stl (vv/io/mesh_io.hpp).
+  void readFile(const std::string& path, where w = where::here());
+  //! `M.writeFile(path)`: save M in the format of the extension.
+  void writeFile(const std::string& path, where w = where::here()) const;
 
   context_type* ctx() const noexcept { return ctx_; }
   //! Bytes held by the set (for memory reports).

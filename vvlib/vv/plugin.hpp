@@ -34,6 +34,7 @@
 #include <vector>
 
 #include "io/positions.hpp"
+#include "io/mesh_io.hpp"
 #include "io/vvm.hpp"
 #include "mesh.hpp"
 #include "neighbourhood_check.hpp"
