@@ -82,4 +82,15 @@ template <class MakeProblem>
   throw error(w, operation, make_problem());
 }
 
+//! Runs fn; a vv::error it throws (a file's own "file:line: problem") is
+//! thrown again as an error of `operation` at w, the caller's line.
+template <class Fn>
+void at_caller(const where& w, const char* operation, Fn&& fn) {
+  try {
+    fn();
+  } catch (const error& e) {
+    throw error(w, operation, e.what());
+  }
+}
+
 }  // namespace vv

@@ -31,11 +31,12 @@ struct export_options {
   std::size_t max_face = std::numeric_limits<std::size_t>::max();
 };
 
-//! Replaces m by the mesh in a file; m is unchanged on failure.
+//! Replaces m by the mesh in a file; m is unchanged on failure. What a
+//! .vvm file let through without a word is added to notes when given.
 template <class Tr>
-void read_mesh(mesh<Tr>& m, const std::string& path) {
+void read_mesh(mesh<Tr>& m, const std::string& path, detail::vvm_notes* notes = nullptr) {
   std::string ext = io::extension_of(path);
-  if (ext == ".vvm") return read_vvm(m, path);
+  if (ext == ".vvm") return read_vvm(m, path, notes);
   polygon_soup soup = read_polygon_file(path);
   build_from_faces(m, soup.points, soup.faces, path);
 }
@@ -67,20 +68,15 @@ void write_mesh(const mesh<Tr>& m, const std::string& path, const export_options
 
 template <class Tr>
 void mesh<Tr>::readFile(const std::string& path, where w) {
-  try {
-    read_mesh(*this, io::resolve(ctx_ ? ctx_->base_dir : std::string(), path));
-  } catch (const error& e) {
-    throw error(w, "readFile", e.what());
-  }
+  detail::vvm_notes notes;
+  at_caller(w, "readFile",
+            [&] { read_mesh(*this, io::resolve(ctx_ ? ctx_->base_dir : std::string(), path), &notes); });
+  detail::say_notes(*ctx_, notes, w);
 }
 
 template <class Tr>
 void mesh<Tr>::writeFile(const std::string& path, where w) const {
-  try {
-    write_mesh(*this, io::resolve(ctx_ ? ctx_->base_dir : std::string(), path));
-  } catch (const error& e) {
-    throw error(w, "writeFile", e.what());
-  }
+  at_caller(w, "writeFile", [&] { write_mesh(*this, io::resolve(ctx_ ? ctx_->base_dir : std::string(), path)); });
 }
 
 }  // namespace vv

@@ -167,6 +167,14 @@ inline std::uint32_t parse_index(const std::string& token, std::size_t count,
   return static_cast<std::uint32_t>(std::stoul(token));
 }
 
+// Says the notes of a read, each once in the context's life, naming the
+// line that read the file.
+template <class Tr>
+void say_notes(context<Tr>& ctx, const vvm_notes& notes, const where& w) {
+  std::string from = w.file ? std::string(" (read at ") + w.file + ":" + std::to_string(w.line) + ")" : "";
+  for (const auto& [key, message] : notes.said) ctx.warn_once(key, message + from);
+}
+
 }  // namespace detail
 
 //! Replaces the contents and properties of m with the .vvm text (name is
@@ -368,22 +376,14 @@ void write_vvm(const mesh<Tr>& m, const std::string& path) {
 template <class Tr>
 void mesh<Tr>::readXMLFile(const std::string& path, where w) {
   detail::vvm_notes notes;
-  try {
-    read_vvm(*this, io::resolve(ctx_ ? ctx_->base_dir : std::string(), path), &notes);
-  } catch (const error& e) {
-    throw error(w, "readXMLFile", e.what());
-  }
-  std::string from = w.file ? std::string(" (read at ") + w.file + ":" + std::to_string(w.line) + ")" : "";
-  for (const auto& [key, message] : notes.said) ctx_->warn_once(key, message + from);
+  at_caller(w, "readXMLFile",
+            [&] { read_vvm(*this, io::resolve(ctx_ ? ctx_->base_dir : std::string(), path), &notes); });
+  detail::say_notes(*ctx_, notes, w);
 }
 
 template <class Tr>
 void mesh<Tr>::writeXMLFile(const std::string& path, where w) const {
-  try {
-    write_vvm(*this, io::resolve(ctx_ ? ctx_->base_dir : std::string(), path));
-  } catch (const error& e) {
-    throw error(w, "writeXMLFile", e.what());
-  }
+  at_caller(w, "writeXMLFile", [&] { write_vvm(*this, io::resolve(ctx_ ? ctx_->base_dir : std::string(), path)); });
 }
 
 }  // namespace vv
