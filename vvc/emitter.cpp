@@ -76,12 +76,44 @@ class emitter {
       case top_item::preproc: w_.preproc(*it.tok); break;
       case top_item::declaration: emit(it.cxx); break;
       case top_item::property: property(p_.properties[it.property_index]); break;
+      case top_item::parameter: parameter_global(p_.parameters[it.parameter_index]); break;
       case top_item::block:
         w_.at(*it.block_name);
         w_.text("static void vv_block_" + std::string(it.block_name->text) + "()");
         emit(*it.block_body);
         break;
     }
+  }
+
+  // `param double rate = 0.5 in [0, 1];` -> an ordinary global, and its
+  // range beside it for the plugin's parameter table.
+  void parameter_global(const parameter& d) {
+    std::string type(d.type->text), name(d.name->text);
+    w_.at(*d.keyword);
+    w_.text(type + " " + name + " = ");
+    emit(d.value);
+    w_.text(";");
+    if (d.lo.empty()) return;
+    w_.text("static const double vv_range_of_" + name + "[2] = {static_cast<double>(");
+    emit(d.lo);
+    w_.text("), static_cast<double>(");
+    emit(d.hi);
+    w_.text(")};");
+  }
+
+  // The parameter table (vv_plugin_params): name, type, the global, range, line.
+  std::string parameter_entry_point() const {
+    std::string s = "VV_PLUGIN_EXPORT const vv_param_entry* vv_plugin_params(std::size_t* vv_count) {\n";
+    if (p_.parameters.empty()) return s + "  *vv_count = 0;\n  return nullptr;\n}\n";
+    s += "  static const vv_param_entry vv_table[] = {\n";
+    for (const parameter& d : p_.parameters) {
+      std::string name(d.name->text);
+      bool ranged = !d.lo.empty();
+      s += "      {\"" + name + "\", \"" + std::string(d.type->text) + "\", &" + name + ", " +
+           (ranged ? "1, vv_range_of_" + name + "[0], vv_range_of_" + name + "[1], " : std::string("0, 0, 0, ")) +
+           std::to_string(d.name->line) + "},\n";
+    }
+    return s + "  };\n  *vv_count = " + std::to_string(p_.parameters.size()) + ";\n  return vv_table;\n}\n";
   }
 
   void property(const property_block& b) {
@@ -189,6 +221,7 @@ class emitter {
       s += "  };\n  *vv_count = " + std::to_string(p_.global_meshes.size()) + ";\n  return vv_table;\n}\n";
     }
     s += mesh_set_entry_points();
+    s += parameter_entry_point();
     w_.generated(s);
   }
 

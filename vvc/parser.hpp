@@ -108,6 +108,8 @@ class parser {
   void parse_property_block(program& p);
   void parse_execution_block(program& p);
   void parse_top_declaration(program& p);
+  bool starts_parameter() const;
+  void parse_parameter(program& p);
   void analyse_fields(property_block& block);
   void note_uses(const pieces& run);
 

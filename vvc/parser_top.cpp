@@ -25,6 +25,8 @@ program parser::parse_program() {
       parse_property_block(p);
     } else if (t.is_identifier() && is_block_name(t.text) && peek(1).is("{")) {
       parse_execution_block(p);
+    } else if (starts_parameter()) {
+      parse_parameter(p);
     } else if (t.is(")") || t.is("]") || t.is("}")) {
       error(t, "unmatched '" + std::string(t.text) + "'");
       take();
@@ -97,6 +99,48 @@ void parser::parse_execution_block(program& p) {
                                   std::to_string(other.block_name->line) + ")");
   p.blocks.push_back(name);
   item.block_body = parse_compound();
+  p.items.push_back(std::move(item));
+}
+
+// `param` is a word of ours only before a parameter's type and name, so a
+// C++ program may still call a variable `param`.
+bool parser::starts_parameter() const {
+  if (!peek().is_word("param") || !peek(2).is_identifier()) return false;
+  for (std::string_view type : {"bool", "int", "unsigned", "float", "double"})
+    if (peek(1).is_word(type)) return true;
+  return false;
+}
+
+// parameter = "param" type name "=" run ["in" "[" run "," run "]"] ";"
+void parser::parse_parameter(program& p) {
+  parameter d;
+  d.keyword = take();
+  d.type = take();
+  d.name = take();
+  for (const parameter& other : p.parameters)
+    if (other.name->text == d.name->text)
+      error(*d.name, "a second parameter " + std::string(d.name->text) + " (the first is at line " +
+                         std::to_string(other.name->line) + ")");
+  std::string of = " of parameter " + std::string(d.name->text);
+  expect("=", "after the name" + of + " (a parameter needs a value: param " + std::string(d.type->text) + " " +
+                  std::string(d.name->text) + " = VALUE;)");
+  d.value = parse_run({";", "in"}, mode::expression);
+  if (d.value.empty()) error(peek(), "expected the value" + of);
+  if (accept("in")) {
+    expect("[", "after 'in' (a range is written in [LO, HI])");
+    d.lo = parse_run({","}, mode::expression);
+    expect(",", "between the ends of the range" + of);
+    d.hi = parse_run({}, mode::expression);
+    expect("]", "after the range" + of);
+    if (d.lo.empty() || d.hi.empty()) error(*d.name, "the range" + of + " needs both ends: in [LO, HI]");
+    if (d.type->is_word("bool")) error(*d.name, "a bool parameter has no range");
+  }
+  expect(";", "after the parameter " + std::string(d.name->text));
+  top_item item;
+  item.kind = top_item::parameter;
+  item.tok = d.keyword;
+  item.parameter_index = p.parameters.size();
+  p.parameters.push_back(std::move(d));
   p.items.push_back(std::move(item));
 }
 

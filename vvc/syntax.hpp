@@ -140,9 +140,18 @@ struct property_block {
   std::vector<const token*> value_init_after;  // emit {} after these (value-initialisation)
 };
 
+//! `param TYPE NAME = VALUE [in [LO, HI]];`: a global the host can change.
+struct parameter {
+  const token* keyword = nullptr;
+  const token* type = nullptr;   // bool, int, unsigned, float or double
+  const token* name = nullptr;
+  pieces value, lo, hi;          // lo and hi empty: no range
+};
+
 //! The top level of a program, in source order.
 struct top_item {
-  enum kind_t { declaration, property, block, preproc } kind = declaration;
+  enum kind_t { declaration, property, block, preproc, parameter } kind = declaration;
+  std::size_t parameter_index = 0;
   pieces cxx;              // a declaration, with any bodies inside
   std::size_t property_index = 0;
   const token* block_name = nullptr;  // execution block
@@ -159,6 +168,7 @@ struct program {
   std::size_t last_property_item = 0;      // index into items; items.size() if none
   std::vector<std::string> blocks;         // execution blocks present
   std::vector<const token*> global_meshes; // names of top-level `mesh` variables
+  std::vector<parameter> parameters;       // `param` globals, in source order
 };
 
 }  // namespace vvc

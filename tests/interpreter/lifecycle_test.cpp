@@ -264,6 +264,49 @@ TEST(Lifecycle, AModelReadsPolygonFilesWithReadFile) {
       << report(r);
 }
 
+// Issue 10, parameters: `param` globals listed, set from the command line,
+// and every wrong --set refused with one line naming the parameter.
+TEST(Parameters, ListedAndSetFromTheCommandLine) {
+  const std::string model = VV_TESTS_DIR "/models/parameters.vvp";
+  test_run::result plain = batch({"--quiet", model});
+  EXPECT_EQ(plain.out, "rate 0.5 cells 3 grow 1 seeds 7 scale 0.1\n") << report(plain);
+  test_run::result set = batch({"--quiet", "--set", "rate=0.25", "--set", "grow=false", "--set", "cells=100",
+                                "--set", "scale=2.5", model});
+  EXPECT_EQ(set.status, 0) << report(set);
+  EXPECT_EQ(set.out, "rate 0.25 cells 100 grow 0 seeds 7 scale 2.5\n") << report(set);
+  test_run::result listed = batch({"--list-params", "--set", "seed_count=12", model});
+  EXPECT_EQ(listed.status, 0) << report(listed);
+  EXPECT_EQ(listed.out,
+            "rate double 0.5 [0, 1]\ncells int 3 [1, 100]\ngrow bool true\nseed_count unsigned 12\n"
+            "scale float 0.1\n")
+      << report(listed);
+}
+
+TEST(Parameters, AWrongSetIsOneLineNamingTheParameter) {
+  const std::string model = VV_TESTS_DIR "/models/parameters.vvp";
+  struct wrong {
+    std::string set, message;
+  };
+  const std::vector<wrong> cases = {
+      {"speed=1", model + ": --set speed=1: the model has no parameter speed (it has rate, cells, grow, "
+                          "seed_count, scale)"},
+      {"cells=1.5", model + ":4: --set cells=1.5: parameter cells is an int, and \"1.5\" is not one"},
+      {"seed_count=-2", model + ":6: --set seed_count=-2: parameter seed_count is an unsigned, and \"-2\" is not one"},
+      {"grow=yes", model + ":5: --set grow=yes: parameter grow is a bool, and \"yes\" is not one (true, false, 1 or 0)"},
+      {"rate=2", model + ":3: --set rate=2: 2 is outside the range [0, 1] of parameter rate"},
+      {"cells=0", model + ":4: --set cells=0: 0 is outside the range [1, 100] of parameter cells"},
+  };
+  for (const wrong& w : cases) {
+    test_run::result r = batch({"--quiet", "--set", w.set, model});
+    EXPECT_EQ(r.status, 1) << w.set << "\n" << report(r);
+    EXPECT_EQ(r.out, "") << w.set << "\n" << report(r);
+    EXPECT_EQ(r.err, "vvinterpreter: " + w.message + "\n") << report(r);
+  }
+  test_run::result malformed = batch({"--set", "rate", model});
+  EXPECT_EQ(malformed.status, 2) << report(malformed);
+  EXPECT_TRUE(has(malformed.err, "--set needs NAME=VALUE, e.g. --set rate=0.5")) << report(malformed);
+}
+
 // Issue 9, items 1 and 2: a vv 1.1 program sees OpenGL without including
 // it and writes 2D points with two coordinates; it draws its own red
 // triangle in the screenshot.

@@ -11,7 +11,8 @@ const char* usage_text =
     "usage: vvinterpreter [options] MODEL.vvp\n"
     "       vvinterpreter --batch [--steps N] [--end] [--export FILE] [--mesh NAME[,NAME...]]\n"
     "                     [--max-face N] [--screenshot FILE.png --size WxH] [--seed S]\n"
-    "                     [--step-timeout SECONDS] MODEL.vvp\n"
+    "                     [--step-timeout SECONDS] [--set NAME=VALUE ...] MODEL.vvp\n"
+    "       vvinterpreter --list-params [--set NAME=VALUE ...] MODEL.vvp\n"
     "       vvinterpreter --compile-only MODEL.vvp\n"
     "\n"
     "Translates, compiles and runs a vv model: in a window (the default), or\n"
@@ -33,6 +34,9 @@ const char* usage_text =
     "  --view YAW PITCH   turn the screenshot's view by these degrees (default 0 0)\n"
     "  --seed S           seed of the model's random numbers (default 0)\n"
     "  --strict           reading the old state of a never-synchronised vertex is an error\n"
+    "  --set NAME=VALUE   give the parameter NAME (a `param` of the program) this value;\n"
+    "                     repeatable\n"
+    "  --list-params      print the parameters (name, type, value, range) and exit\n"
     "  --check            after start and every step, check every global mesh's neighbourhoods\n"
     "                     and stop at the first broken one, naming the line that last edited it\n"
     "  --script FILE      viewer: run commands from FILE (step N, run, rewind, end,\n"
@@ -103,6 +107,13 @@ parse_result parse_options(int argc, const char* const* argv) {
       o.compile_only = true;
     } else if (a == "--strict") {
       o.strict = true;
+    } else if (a == "--list-params") {
+      o.list_params = true;
+    } else if (a == "--set") {
+      std::size_t eq = std::string::npos;
+      if (!value(v) || (eq = v.find('=')) == std::string::npos || eq == 0)
+        return fail("--set needs NAME=VALUE, e.g. --set rate=0.5");
+      o.parameter_values.emplace_back(v.substr(0, eq), v.substr(eq + 1));
     } else if (a == "--check") {
       o.check = true;
     } else if (a == "--quiet") {
@@ -169,6 +180,7 @@ parse_result parse_options(int argc, const char* const* argv) {
     }
   }
   if (o.model.empty()) return fail("no model given");
+  if (o.list_params) o.batch = true;  // headless, and supervised like a batch run
   if (o.batch && !o.script.empty()) return fail("--script drives the viewer; it cannot be used with --batch");
   r.ok = true;
   return r;

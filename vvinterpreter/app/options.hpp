@@ -25,6 +25,9 @@ struct options {
   std::uint64_t seed = 0;     // --seed S
   bool strict = false;        // --strict
   bool check = false;         // --check
+  //! --set NAME=VALUE, in order (NAME, VALUE).
+  std::vector<std::pair<std::string, std::string>> parameter_values;
+  bool list_params = false;   // --list-params
   std::string script;         // --script FILE (viewer)
   std::string frames = "frames";  // --frames DIR (proxy.record_frame)
   std::string cache;          // --cache DIR

@@ -73,11 +73,28 @@ std::string screenshot(const options& o, model_runner& runner) {
   return written;
 }
 
+// --list-params: the parameters as the file and --set give them, before
+// start (which does not run).
+int list_parameters(const options& o, const build_result& b) {
+  if (!b.warnings.empty()) std::fprintf(stderr, "%s", b.warnings.c_str());
+  std::string error;
+  std::unique_ptr<session> model = session::load(b.plugin, session_settings_for(o), error);
+  if (!model) return fail(error);
+  model->skip_close();  // it never started
+  std::vector<parameter_setting> settings;
+  for (const auto& [name, text] : o.parameter_values) settings.push_back({name, "", text});
+  std::string refused = apply_parameter_settings(*model, settings, o.model);
+  if (!refused.empty()) return fail(refused);
+  for (const vv_param_entry* p : parameters_of(*model)) std::printf("%s\n", parameter_line(*p).c_str());
+  return 0;
+}
+
 // The batch run itself, in the supervised child process.
 int run_model_headless(const options& o) {
   model_runner runner(o);
   build_result b = runner.build(false);
   if (!b.ok) return fail(b.error);
+  if (o.list_params) return list_parameters(o, b);
   report_build(o, b);
   if (!runner.load(b.plugin)) return fail(runner.error());
   progress bar(o.steps, o.quiet);

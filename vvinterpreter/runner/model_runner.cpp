@@ -24,6 +24,10 @@ session_settings session_settings_for(const options& o) {
   return s;
 }
 
+model_runner::model_runner(const options& o) : o_(o) {
+  for (const auto& [name, text] : o.parameter_values) settings_.push_back({name, "", text});
+}
+
 build_result model_runner::build(bool force, std::function<void()> compiling) const {
   build_settings s = build_settings_for(o_, force);
   s.compiling = std::move(compiling);
@@ -37,6 +41,14 @@ bool model_runner::load(const std::string& plugin_path, unsigned steps) {
     error_ = error;
     return false;
   }
+  // The user's values replace the file's before start reads them.
+  std::vector<parameter_setting> kept = settings_;
+  std::string refused = apply_parameter_settings(*fresh, kept, o_.model);
+  if (!refused.empty()) {
+    error_ = refused;
+    return false;
+  }
+  settings_ = kept;
   if (!fresh->start()) {
     error_ = fresh->error();
     return false;  // `fresh` closes and unloads; the running model stays
@@ -49,6 +61,21 @@ bool model_runner::load(const std::string& plugin_path, unsigned steps) {
   while (model_->steps_done() < steps && !cancel)
     if (!step()) break;
   return true;
+}
+
+std::string model_runner::set_parameter(const std::string& name, const std::string& text) {
+  if (!model_) return "no model is loaded";
+  const vv_param_entry* p = find_parameter(*model_, name);
+  if (!p) return "the model has no parameter " + name;
+  std::string why = vvi::set_parameter(*p, text);
+  if (!why.empty()) return why;
+  for (parameter_setting& g : settings_)
+    if (g.name == name) {
+      g = {name, p->type, text};
+      return "";
+    }
+  settings_.push_back({name, p->type, text});
+  return "";
 }
 
 bool model_runner::step() {

@@ -12,6 +12,7 @@
 
 #include "app/options.hpp"
 #include "build/model_build.hpp"
+#include "runner/parameters.hpp"
 #include "runner/session.hpp"
 
 namespace vvi {
@@ -21,7 +22,7 @@ session_settings session_settings_for(const options& o);
 
 class model_runner {
  public:
-  explicit model_runner(const options& o) : o_(o) {}
+  explicit model_runner(const options& o);
 
   //! Translates and compiles, or finds the build in the cache. It does not
   //! touch the running model, so it may run beside it on another thread.
@@ -59,6 +60,12 @@ class model_runner {
   std::string export_to(const std::string& path) const;
   std::string export_to(const std::string& path, const std::vector<std::string>& meshes) const;
 
+  //! Sets a parameter of the running model and keeps the value for every
+  //! fresh instance (rewind, reload); "" or why not.
+  std::string set_parameter(const std::string& name, const std::string& text);
+  //! The values the user gave (--set, set_parameter), kept across reloads.
+  const std::vector<parameter_setting>& parameter_settings() const { return settings_; }
+
   //! Set from another thread to end a run-up (load with steps) between steps.
   std::atomic<bool> cancel{false};
 
@@ -67,6 +74,7 @@ class model_runner {
   std::unique_ptr<session> model_;
   std::string plugin_;
   std::string error_;
+  std::vector<parameter_setting> settings_;
 };
 
 }  // namespace vvi

@@ -115,6 +115,7 @@ std::unique_ptr<plugin> plugin::open(const std::string& path, std::string& error
   bind(p->union_geometry, "vv_plugin_union_geometry");
   bind(p->error_frames, "vv_plugin_error_frames");
   bind(p->check, "vv_plugin_check");
+  bind(p->params, "vv_plugin_params");
   if (!ok) return nullptr;
   return p;
 }

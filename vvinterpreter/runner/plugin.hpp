@@ -30,6 +30,7 @@ class plugin {
   const char* (*union_geometry)(const char* const*, std::size_t, std::size_t, vv_geometry*) = nullptr;
   const void* const* (*error_frames)(std::size_t*) = nullptr;
   const char* (*check)() = nullptr;
+  const vv_param_entry* (*params)(std::size_t*) = nullptr;
 
   const std::string& path() const { return path_; }
   //! The private copy that is loaded (what /proc/self/maps names).

@@ -35,6 +35,8 @@ class session {
   bool render_screen();
   //! Runs the close block (once); the plugin stays loaded until destruction.
   void close();
+  //! A model that never started is unloaded without its close block.
+  void skip_close() { closed_ = true; }
   ~session();
 
   unsigned steps_done() const { return steps_; }

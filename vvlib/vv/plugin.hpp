@@ -18,6 +18,7 @@
 //                                        size_t max_face, vv_geometry* out);
 //                                         // the union of several global meshes
 //   const char* vv_plugin_check(void);     // NULL, or the first broken neighbourhood
+//   const vv_param_entry* vv_plugin_params(size_t* count);  // `param` globals
 //   const void* const* vv_plugin_error_frames(size_t* count);
 //                                         // where the last error without a
 //                                         // source location was raised
@@ -69,6 +70,18 @@ struct vv_geometry {
   const std::uint32_t* line_vertices;
 };
 
+//! A parameter of the program (`param TYPE NAME = VALUE [in [LO, HI]];`):
+//! a global the host reads and writes through `value`, which points to a
+//! bool, int, unsigned, float or double as `type` says.
+struct vv_param_entry {
+  const char* name;
+  const char* type;
+  void* value;
+  int has_range;
+  double lo, hi;
+  int line;  //!< of its declaration in the .vvp
+};
+
 //! One global mesh of the program.
 struct vv_mesh_entry {
   const char* name;
@@ -99,6 +112,8 @@ const vv_mesh_entry* vv_plugin_meshes(std::size_t* count);
 const char* vv_plugin_union_vvm(const char* const* names, std::size_t count, const char* path);
 const char* vv_plugin_union_geometry(const char* const* names, std::size_t count, std::size_t max_face,
                                      vv_geometry* out);
+//! The program's parameters (`param` globals), in source order.
+const vv_param_entry* vv_plugin_params(std::size_t* count);
 //! Return addresses of the last error whose message has no source location.
 const void* const* vv_plugin_error_frames(std::size_t* count);
 //! The first broken neighbourhood of any global mesh, with the lines that
