@@ -1,5 +1,5 @@
 // Files for tests: a scratch folder per test process (removed when the
-// tests end) and whole-file reading.
+// tests end), writing files into it, and whole-file reading.
 #pragma once
 
 #include <gtest/gtest.h>
@@ -31,6 +31,15 @@ class scratch_cleanup : public testing::Environment {
 };
 inline testing::Environment* const cleanup_registration =
     testing::AddGlobalTestEnvironment(new scratch_cleanup);
+
+//! Writes `bytes` to `name` in the scratch folder and returns its path.
+inline std::string write_scratch(const std::string& name, const std::string& bytes) {
+  const std::string path = scratch_dir() + name;
+  std::ofstream out(path, std::ios::binary | std::ios::trunc);
+  out << bytes;
+  EXPECT_TRUE(out.good()) << "cannot write " << path;
+  return path;
+}
 
 inline std::string slurp(const std::string& path) {
   std::ifstream in(path, std::ios::binary);

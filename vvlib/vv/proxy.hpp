@@ -2,18 +2,28 @@
 // program writes and the host reads.
 #pragma once
 
+#include <string>
 #include <vector>
 
 namespace vv {
 
 //! An object whose contents come from a file (a colour palette, a material
 //! list, a function graph): the host's "reread files" command calls
-//! reread() on every one the program put into the proxy's lists.
+//! reread() on every one the program put into the proxy's lists and on
+//! every one registered in file_objects.hpp.
 class file_object {
  public:
   virtual ~file_object() = default;
   virtual void reread() = 0;
+  //! The file, for a host that watches it ("" when there is none).
+  virtual const std::string& path() const {
+    static const std::string none;
+    return none;
+  }
 };
+
+// Defined in file_objects.hpp, included at the end.
+inline void reread_file_objects(std::initializer_list<const std::vector<file_object*>*> proxy_lists);
 
 struct proxy {
   unsigned steps = 0;         //!< steps the host's "run" command performs
@@ -33,10 +43,8 @@ struct proxy {
   //! File-backed objects, by kind, re-read on the host's command.
   std::vector<file_object*> materials, palettes, functions, contours;
 
-  void reread_files() {
-    for (auto* list : {&materials, &palettes, &functions, &contours})
-      for (file_object* f : *list) f->reread();
-  }
+  //! Rereads the objects in these lists and the registered ones, each once.
+  void reread_files() { reread_file_objects({&materials, &palettes, &functions, &contours}); }
 
   void setViewVolume(double maxx, double maxy, double maxz, double minx, double miny,
                      double minz) noexcept {
@@ -47,3 +55,5 @@ struct proxy {
 };
 
 }  // namespace vv
+
+#include "file_objects.hpp"
