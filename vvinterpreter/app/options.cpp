@@ -4,6 +4,7 @@
 #include <string>
 
 #include "build/build_config.hpp"
+#include "viewer/script.hpp"
 
 namespace vvi {
 
@@ -11,7 +12,8 @@ const char* usage_text =
     "usage: vvinterpreter [options] MODEL.vvp\n"
     "       vvinterpreter --batch [--steps N] [--end] [--export FILE] [--mesh NAME[,NAME...]]\n"
     "                     [--max-face N] [--screenshot FILE.png --size WxH] [--seed S]\n"
-    "                     [--step-timeout SECONDS] [--set NAME=VALUE ...] MODEL.vvp\n"
+    "                     [--step-timeout SECONDS] [--set NAME=VALUE ...] [--plots FILE.csv]\n"
+    "                     [--pick LABEL ...] [--color-by NAME] MODEL.vvp\n"
     "       vvinterpreter --list-params [--set NAME=VALUE ...] MODEL.vvp\n"
     "       vvinterpreter --compile-only MODEL.vvp\n"
     "\n"
@@ -37,11 +39,14 @@ const char* usage_text =
     "  --set NAME=VALUE   give the parameter NAME (a `param` of the program) this value;\n"
     "                     repeatable\n"
     "  --list-params      print the parameters (name, type, value, range) and exit\n"
+    "  --plots FILE.csv   batch: write what the model recorded with proxy.plot, a column\n"
+    "                     per series (the first column: the step)\n"
+    "  --pick LABEL       batch: print the vertex with this label (properties, neighbourhood,\n"
+    "                     half-edge records) after the steps; repeatable\n"
+    "  --color-by NAME    colour the drawing by a numeric vertex property (with a colour bar)\n"
     "  --check            after start and every step, check every global mesh's neighbourhoods\n"
     "                     and stop at the first broken one, naming the line that last edited it\n"
-    "  --script FILE      viewer: run commands from FILE (step N, run, rewind, end,\n"
-    "                     screenshot FILE, window-screenshot FILE, export MESH FILE,\n"
-    "                     rotate DX DY, zoom F, wait MS, stop, quit)\n"
+    "  --script FILE      viewer: run the commands in FILE, one per line (listed below)\n"
     "  --frames DIR       where proxy.record_frame writes frame_NNNNN.png (default ./frames)\n"
     "  --compile-only     translate and compile, then exit\n"
     "  --cache DIR        compiled models (default $VV_CACHE_DIR or ~/.cache/vv)\n"
@@ -65,6 +70,8 @@ std::string* text_option(options& o, const std::string& name) {
   if (name == "--export") return &o.export_path;
   if (name == "--screenshot") return &o.screenshot;
   if (name == "--script") return &o.script;
+  if (name == "--plots") return &o.plots_path;
+  if (name == "--color-by") return &o.color_by;
   if (name == "--frames") return &o.frames;
   if (name == "--cache") return &o.cache;
   return nullptr;
@@ -95,7 +102,7 @@ parse_result parse_options(int argc, const char* const* argv) {
     std::string v;
     if (a == "--help" || a == "-h") {
       r.ok = r.exit_now = true;
-      r.message = usage_text;
+      r.message = std::string(usage_text) + "\nscript commands (--script FILE):\n" + script_help;
       return r;
     } else if (a == "--version") {
       r.ok = r.exit_now = true;
@@ -140,6 +147,9 @@ parse_result parse_options(int argc, const char* const* argv) {
         if (comma == from) return fail("--mesh needs names separated by commas, e.g. --mesh J,C");
         o.meshes.push_back(v.substr(from, comma - from));
       }
+    } else if (a == "--pick") {
+      if (!number(n) || n == 0 || n > 0xffffffffull) return fail("--pick needs a vertex label (1 or more)");
+      o.picks.push_back(static_cast<unsigned>(n));
     } else if (a == "--steps") {
       if (!number(n) || n > 100000000) return fail("--steps needs a count");
       o.steps = static_cast<unsigned>(n);

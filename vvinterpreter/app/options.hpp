@@ -28,6 +28,9 @@ struct options {
   //! --set NAME=VALUE, in order (NAME, VALUE).
   std::vector<std::pair<std::string, std::string>> parameter_values;
   bool list_params = false;   // --list-params
+  std::string plots_path;     // --plots FILE.csv (batch): the proxy.plot series
+  std::vector<unsigned> picks;  // --pick LABEL (batch): describe these vertices
+  std::string color_by;       // --color-by NAME: colour by a numeric vertex property
   std::string script;         // --script FILE (viewer)
   std::string frames = "frames";  // --frames DIR (proxy.record_frame)
   std::string cache;          // --cache DIR

@@ -11,6 +11,7 @@
 #include "render/offscreen.hpp"
 #include "runner/crash_report.hpp"
 #include "runner/model_runner.hpp"
+#include "runner/plots.hpp"
 #include "runner/supervisor.hpp"
 #include "render/scene.hpp"
 
@@ -50,6 +51,12 @@ class progress {
   std::chrono::steady_clock::time_point start_ = std::chrono::steady_clock::now(), last_{};
 };
 
+std::string no_such_property(const options& o, const vv_geometry& g) {
+  std::string numeric = g.numeric_fields ? g.numeric_fields : "";
+  return o.model + ": --color-by " + o.color_by + ": the vertices have no numeric property " + o.color_by +
+         (numeric.empty() ? " (they have none)" : " (they have " + numeric + ")");
+}
+
 std::string screenshot(const options& o, model_runner& runner) {
   std::string error;
   std::unique_ptr<offscreen> gl = offscreen::create(o.width, o.height, error);
@@ -58,8 +65,9 @@ std::string screenshot(const options& o, model_runner& runner) {
   if (!init_rendering(model, error)) return error;
   mesh_drawing drawing;  // drawn unless the model draws itself; its bounds fit the view
   vv_geometry g{};
-  error = runner.geometry(g);
+  error = runner.geometry(g, o.color_by);
   if (!error.empty()) return error;
+  if (!o.color_by.empty() && !g.values) return no_such_property(o, g);
   if (!g.positions && !(model && model->has_block("render")))
     return o.screenshot + ": nothing to draw: the vertices of the model's mesh have no 'pos' property "
                           "(give them one, or draw them in a render block)";
@@ -115,6 +123,17 @@ int run_model_headless(const options& o) {
     if (!e.empty()) return fail(e);
     if (!o.quiet) std::printf("wrote %s\n", o.export_path.c_str());
   }
+  for (unsigned label : o.picks) {
+    std::string text;
+    std::string e = runner.describe_vertex(label, text);
+    if (!e.empty()) return fail(e);
+    std::printf("%s", text.c_str());
+  }
+  if (!o.plots_path.empty()) {
+    std::string e = write_plots(o.plots_path, model.proxy());
+    if (!e.empty()) return fail(e);
+    if (!o.quiet) std::printf("wrote %s\n", o.plots_path.c_str());
+  }
   if (!o.screenshot.empty()) {
     std::string e = screenshot(o, runner);
     if (!e.empty()) return fail(e);
@@ -128,7 +147,7 @@ int run_model_headless(const options& o) {
 // The temporaries the export and the screenshot are written to before
 // they are renamed into place.
 void remove_temporaries(const options& o) {
-  for (const std::string& target : {o.export_path, o.screenshot})
+  for (const std::string& target : {o.export_path, o.screenshot, o.plots_path})
     if (!target.empty()) std::remove(vv::io::temporary_for(target).c_str());
 }
 

@@ -67,6 +67,11 @@ void camera::drag_rotate(double x0, double y0, double x1, double y1, int w, int 
   orientation_ = glm::normalize(glm::inverse(turn) * orientation_);
 }
 
+void camera::look_from(double azimuth, double elevation) {
+  orientation_ = glm::normalize(glm::angleAxis(glm::radians(azimuth), glm::dvec3(0, 1, 0)) *
+                                glm::angleAxis(glm::radians(-elevation), glm::dvec3(1, 0, 0)));
+}
+
 void camera::rotate_degrees(double yaw, double pitch) {
   glm::dvec3 up = orientation_ * glm::dvec3(0, 1, 0), right = orientation_ * glm::dvec3(1, 0, 0);
   glm::dquat turn = glm::angleAxis(glm::radians(yaw), up) * glm::angleAxis(glm::radians(pitch), right);
@@ -91,7 +96,13 @@ glm::dmat4 camera::view() const {
 glm::dmat4 camera::projection(double aspect) const {
   double near = std::max(distance_ - radius_ * 4, distance_ * 1e-3);
   double far = distance_ + radius_ * 4;
-  return glm::perspective(glm::radians(fov_degrees), aspect, near, far);
+  // The shift moves the picture in normalised device coordinates (2 wide).
+  return glm::translate(glm::dmat4(1), glm::dvec3(2 * shift_, 0, 0)) *
+         glm::perspective(glm::radians(fov_degrees), aspect, near, far);
+}
+
+double camera::pixels_per_unit(int h) const {
+  return h / (2 * distance_ * std::tan(glm::radians(fov_degrees) / 2));
 }
 
 }  // namespace vvi

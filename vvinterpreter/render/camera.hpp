@@ -27,6 +27,12 @@ class camera {
   void reset();
   //! An arcball drag from (x0, y0) to (x1, y1), in pixels of a w x h view.
   void drag_rotate(double x0, double y0, double x1, double y1, int w, int h);
+  //! Looks at the same point from a direction: turned by azimuth about the
+  //! world's y axis and raised by elevation above the xz-plane (degrees).
+  void look_from(double azimuth, double elevation);
+  //! Moves the picture sideways by this fraction of the view's width (the
+  //! model beside the panel, not under it); picking sees the same.
+  void set_shift(double fraction) { shift_ = fraction; }
   //! Turns by degrees about the view's vertical and horizontal axes.
   void rotate_degrees(double yaw, double pitch);
   //! Moves the scene by a drag of (dx, dy) pixels in a view h pixels high.
@@ -41,6 +47,8 @@ class camera {
   glm::dmat4 view() const;
   glm::dmat4 projection(double aspect) const;
   glm::dvec3 eye() const;
+  //! Pixels per unit of length at the point looked at, in a view h pixels high.
+  double pixels_per_unit(int h) const;
 
  private:
   static constexpr double fov_degrees = 35;
@@ -50,6 +58,7 @@ class camera {
   glm::dquat orientation_{1, 0, 0, 0};
   glm::dvec3 fit_center_{0};
   double fit_distance_ = 5;
+  double shift_ = 0;
 };
 
 }  // namespace vvi

@@ -5,11 +5,13 @@
 #include <GL/glext.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstring>
 #include <utility>
 
 #include <glm/gtc/type_ptr.hpp>
 
+#include "render/colour_ramp.hpp"
 #include "runner/session.hpp"
 
 namespace vvi {
@@ -19,111 +21,235 @@ namespace {
 struct vertex_record {
   float position[3];
   float normal[3];
+  float colour[3];
 };
+
+const rgb plain_colour = {0.62f, 0.72f, 0.86f};
+
+glm::dvec3 position_of(const vv_geometry& g, std::uint32_t v) {
+  return glm::dvec3(g.positions[3 * v], g.positions[3 * v + 1], g.positions[3 * v + 2]);
+}
+
+void put(float (&to)[3], const glm::dvec3& v) { to[0] = float(v.x), to[1] = float(v.y), to[2] = float(v.z); }
+void put(float (&to)[3], const rgb& c) { to[0] = c[0], to[1] = c[1], to[2] = c[2]; }
+
+// Each edge once, as index pairs: the faces' sides (a side shared by two
+// faces appears twice) and the segments of the polylines.
+std::vector<std::uint32_t> unique_edges(const vv_geometry& g) {
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> pairs;
+  auto add = [&](std::uint32_t a, std::uint32_t b) { pairs.emplace_back(std::min(a, b), std::max(a, b)); };
+  for (std::size_t f = 0; f < g.face_count; ++f) {
+    const std::uint32_t* c = g.face_vertices + g.face_offsets[f];
+    std::size_t k = g.face_offsets[f + 1] - g.face_offsets[f];
+    for (std::size_t i = 0; i < k; ++i) add(c[i], c[(i + 1) % k]);
+  }
+  for (std::size_t l = 0; l < g.line_count; ++l)
+    for (std::uint32_t i = g.line_offsets[l]; i + 1 < g.line_offsets[l + 1]; ++i)
+      add(g.line_vertices[i], g.line_vertices[i + 1]);
+  std::sort(pairs.begin(), pairs.end());
+  pairs.erase(std::unique(pairs.begin(), pairs.end()), pairs.end());
+  std::vector<std::uint32_t> lines;
+  lines.reserve(2 * pairs.size());
+  for (const auto& p : pairs) lines.push_back(p.first), lines.push_back(p.second);
+  return lines;
+}
+
+void upload(unsigned target, unsigned buffer, std::size_t bytes, const void* data) {
+  glBindBuffer(target, buffer);
+  glBufferData(target, GLsizeiptr(bytes), data, GL_STATIC_DRAW);
+  glBindBuffer(target, 0);
+}
+
+void point_at(unsigned buffer) {
+  glBindBuffer(GL_ARRAY_BUFFER, buffer);
+  glVertexPointer(3, GL_FLOAT, sizeof(vertex_record), reinterpret_cast<void*>(offsetof(vertex_record, position)));
+  glNormalPointer(GL_FLOAT, sizeof(vertex_record), reinterpret_cast<void*>(offsetof(vertex_record, normal)));
+  glColorPointer(3, GL_FLOAT, sizeof(vertex_record), reinterpret_cast<void*>(offsetof(vertex_record, colour)));
+}
 
 }  // namespace
 
 mesh_drawing::~mesh_drawing() { release(); }
 
 void mesh_drawing::release() {
-  unsigned buffers[] = {vertex_buffer_, triangle_buffer_, line_buffer_};
-  if (vertex_buffer_) glDeleteBuffers(3, buffers);
-  vertex_buffer_ = triangle_buffer_ = line_buffer_ = 0;
-  triangle_indices_ = line_indices_ = 0;
+  unsigned buffers[] = {vertex_buffer_, triangle_buffer_, line_buffer_, flat_buffer_};
+  if (vertex_buffer_) glDeleteBuffers(4, buffers);
+  vertex_buffer_ = triangle_buffer_ = line_buffer_ = flat_buffer_ = 0;
+  vertex_count_ = triangle_indices_ = line_indices_ = flat_corners_ = 0;
 }
 
-void mesh_drawing::update(const vv_geometry& g) {
+void mesh_drawing::update(const vv_geometry& g, bool flat) {
   bounds_ = box();
-  std::vector<vertex_record> vertices(g.positions ? g.vertex_count : 0);
+  mean_edge_ = 0;
+  has_values_ = false;
+  std::size_t n = g.positions ? g.vertex_count : 0;
+  std::vector<vertex_record> vertices(n);
   std::vector<std::uint32_t> triangles, lines;
-  if (g.positions) {
-    for (std::size_t i = 0; i < g.vertex_count; ++i) {
-      glm::dvec3 p(g.positions[3 * i], g.positions[3 * i + 1], g.positions[3 * i + 2]);
-      bounds_.add(p);
-      vertices[i] = {{float(p.x), float(p.y), float(p.z)}, {0, 0, 0}};
+  std::vector<vertex_record> corners;  // flat: three per triangle
+  if (n) {
+    std::vector<rgb> colours(n, plain_colour);
+    if (g.values) {
+      has_values_ = true;
+      value_min_ = 0, value_max_ = 0;
+      bool any = false;
+      for (std::size_t i = 0; i < n; ++i)
+        if (std::isfinite(g.values[i])) {
+          value_min_ = any ? std::min(value_min_, g.values[i]) : g.values[i];
+          value_max_ = any ? std::max(value_max_, g.values[i]) : g.values[i];
+          any = true;
+        }
+      double span = value_max_ - value_min_;
+      for (std::size_t i = 0; i < n; ++i)
+        colours[i] = colour_ramp(!std::isfinite(g.values[i]) ? std::nan("")
+                                 : span > 0                  ? (g.values[i] - value_min_) / span
+                                                             : 0.5);
     }
-    std::vector<glm::dvec3> normals(g.vertex_count, glm::dvec3(0));
+    std::vector<glm::dvec3> normals(n, glm::dvec3(0));
+    for (std::size_t i = 0; i < n; ++i) bounds_.add(position_of(g, std::uint32_t(i)));
     for (std::size_t f = 0; f < g.face_count; ++f) {
       const std::uint32_t* c = g.face_vertices + g.face_offsets[f];
       std::size_t k = g.face_offsets[f + 1] - g.face_offsets[f];
-      for (std::size_t i = 0; i < k; ++i) {  // each boundary edge once per face
-        std::uint32_t a = c[i], b = c[(i + 1) % k];
-        lines.push_back(std::min(a, b));
-        lines.push_back(std::max(a, b));
-      }
+      glm::dvec3 face_normal(0);
       for (std::size_t i = 1; i + 1 < k; ++i) {  // a fan of triangles
         triangles.insert(triangles.end(), {c[0], c[i], c[i + 1]});
-        auto at = [&](std::uint32_t v) {
-          return glm::dvec3(g.positions[3 * v], g.positions[3 * v + 1], g.positions[3 * v + 2]);
-        };
         // Unnormalised: larger triangles count more (area weighting).
-        glm::dvec3 n = glm::cross(at(c[i]) - at(c[0]), at(c[i + 1]) - at(c[0]));
-        normals[c[0]] += n, normals[c[i]] += n, normals[c[i + 1]] += n;
+        face_normal += glm::cross(position_of(g, c[i]) - position_of(g, c[0]),
+                                  position_of(g, c[i + 1]) - position_of(g, c[0]));
       }
+      for (std::size_t i = 0; i < k; ++i) normals[c[i]] += face_normal;
+      if (!flat) continue;
+      double len = glm::length(face_normal);
+      glm::dvec3 unit = len > 0 ? face_normal / len : glm::dvec3(0, 0, 1);
+      for (std::size_t i = 1; i + 1 < k; ++i)
+        for (std::uint32_t v : {c[0], c[i], c[i + 1]}) {
+          vertex_record r{};
+          put(r.position, position_of(g, v)), put(r.normal, unit), put(r.colour, colours[v]);
+          corners.push_back(r);
+        }
     }
-    for (std::size_t i = 0; i < g.vertex_count; ++i) {
+    for (std::size_t i = 0; i < n; ++i) {
       double len = glm::length(normals[i]);
-      glm::dvec3 n = len > 0 ? normals[i] / len : glm::dvec3(0, 0, 1);
-      vertices[i].normal[0] = float(n.x), vertices[i].normal[1] = float(n.y), vertices[i].normal[2] = float(n.z);
+      put(vertices[i].position, position_of(g, std::uint32_t(i)));
+      put(vertices[i].normal, len > 0 ? normals[i] / len : glm::dvec3(0, 0, 1));
+      put(vertices[i].colour, colours[i]);
     }
-    for (std::size_t l = 0; l < g.line_count; ++l)  // a curve: its polylines' segments
-      for (std::uint32_t i = g.line_offsets[l]; i + 1 < g.line_offsets[l + 1]; ++i) {
-        std::uint32_t a = g.line_vertices[i], b = g.line_vertices[i + 1];
-        lines.push_back(std::min(a, b));
-        lines.push_back(std::max(a, b));
-      }
-    // Edges shared by two faces appear twice: keep one.
-    std::vector<std::pair<std::uint32_t, std::uint32_t>> pairs;
-    pairs.reserve(lines.size() / 2);
-    for (std::size_t i = 0; i < lines.size(); i += 2) pairs.emplace_back(lines[i], lines[i + 1]);
-    std::sort(pairs.begin(), pairs.end());
-    pairs.erase(std::unique(pairs.begin(), pairs.end()), pairs.end());
-    lines.clear();
-    for (const auto& p : pairs) lines.push_back(p.first), lines.push_back(p.second);
+    lines = unique_edges(g);
+    double total = 0;
+    for (std::size_t i = 0; i < lines.size(); i += 2)
+      total += glm::length(position_of(g, lines[i]) - position_of(g, lines[i + 1]));
+    mean_edge_ = lines.empty() ? 0 : total / double(lines.size() / 2);
   }
   if (!vertex_buffer_) {
-    unsigned buffers[3];
-    glGenBuffers(3, buffers);
-    vertex_buffer_ = buffers[0], triangle_buffer_ = buffers[1], line_buffer_ = buffers[2];
+    unsigned buffers[4];
+    glGenBuffers(4, buffers);
+    vertex_buffer_ = buffers[0], triangle_buffer_ = buffers[1], line_buffer_ = buffers[2], flat_buffer_ = buffers[3];
   }
-  glBindBuffer(GL_ARRAY_BUFFER, vertex_buffer_);
-  glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(vertices.size() * sizeof(vertex_record)), vertices.data(), GL_STATIC_DRAW);
-  glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, triangle_buffer_);
-  glBufferData(GL_ELEMENT_ARRAY_BUFFER, GLsizeiptr(triangles.size() * 4), triangles.data(), GL_STATIC_DRAW);
-  glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, line_buffer_);
-  glBufferData(GL_ELEMENT_ARRAY_BUFFER, GLsizeiptr(lines.size() * 4), lines.data(), GL_STATIC_DRAW);
-  glBindBuffer(GL_ARRAY_BUFFER, 0);
-  glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, 0);
+  upload(GL_ARRAY_BUFFER, vertex_buffer_, vertices.size() * sizeof(vertex_record), vertices.data());
+  upload(GL_ELEMENT_ARRAY_BUFFER, triangle_buffer_, triangles.size() * 4, triangles.data());
+  upload(GL_ELEMENT_ARRAY_BUFFER, line_buffer_, lines.size() * 4, lines.data());
+  upload(GL_ARRAY_BUFFER, flat_buffer_, corners.size() * sizeof(vertex_record), corners.data());
+  vertex_count_ = n;
   triangle_indices_ = triangles.size();
   line_indices_ = lines.size();
+  flat_corners_ = corners.size();
 }
 
-void mesh_drawing::draw() const {
-  if (!vertex_buffer_ || (!triangle_indices_ && !line_indices_)) return;
-  glBindBuffer(GL_ARRAY_BUFFER, vertex_buffer_);
+void mesh_drawing::draw(const display_style& style, bool edges_visible) const {
+  if (!vertex_buffer_ || !vertex_count_) return;
   glEnableClientState(GL_VERTEX_ARRAY);
   glEnableClientState(GL_NORMAL_ARRAY);
-  glVertexPointer(3, GL_FLOAT, sizeof(vertex_record), reinterpret_cast<void*>(offsetof(vertex_record, position)));
-  glNormalPointer(GL_FLOAT, sizeof(vertex_record), reinterpret_cast<void*>(offsetof(vertex_record, normal)));
-  // Faces, pushed back a little so the edges drawn on them stay visible.
-  glEnable(GL_LIGHTING);
-  glEnable(GL_POLYGON_OFFSET_FILL);
-  glPolygonOffset(1, 1);
-  glColor3f(0.62f, 0.72f, 0.86f);
-  glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, triangle_buffer_);
-  glDrawElements(GL_TRIANGLES, GLsizei(triangle_indices_), GL_UNSIGNED_INT, nullptr);
-  glDisable(GL_POLYGON_OFFSET_FILL);
-  glDisable(GL_LIGHTING);
+  glEnableClientState(GL_COLOR_ARRAY);
+  if (style.faces && triangle_indices_) {
+    // Faces, pushed back a little so the edges drawn on them stay visible.
+    glEnable(GL_LIGHTING);
+    glEnable(GL_POLYGON_OFFSET_FILL);
+    glPolygonOffset(1, 1);
+    if (!style.back_faces) glEnable(GL_CULL_FACE), glCullFace(GL_BACK);
+    if (style.flat && flat_corners_) {
+      point_at(flat_buffer_);
+      glDrawArrays(GL_TRIANGLES, 0, GLsizei(flat_corners_));
+    } else {
+      point_at(vertex_buffer_);
+      glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, triangle_buffer_);
+      glDrawElements(GL_TRIANGLES, GLsizei(triangle_indices_), GL_UNSIGNED_INT, nullptr);
+    }
+    glDisable(GL_CULL_FACE);
+    glDisable(GL_POLYGON_OFFSET_FILL);
+    glDisable(GL_LIGHTING);
+  }
+  point_at(vertex_buffer_);
   glDisableClientState(GL_NORMAL_ARRAY);
-  glColor3f(0.15f, 0.17f, 0.22f);
-  if (!triangle_indices_) glLineWidth(2);  // a curve: its lines are all there is
-  glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, line_buffer_);
-  glDrawElements(GL_LINES, GLsizei(line_indices_), GL_UNSIGNED_INT, nullptr);
-  glLineWidth(1);
+  // A curve (no faces) is all lines: they are always drawn, coloured when
+  // the drawing is coloured.
+  bool curve = !triangle_indices_;
+  if (!curve || !has_values_) glDisableClientState(GL_COLOR_ARRAY);
+  if (edges_visible || curve) {
+    glColor3f(0.15f, 0.17f, 0.22f);
+    if (curve) glLineWidth(2);
+    glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, line_buffer_);
+    glDrawElements(GL_LINES, GLsizei(line_indices_), GL_UNSIGNED_INT, nullptr);
+    glLineWidth(1);
+  }
+  glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, 0);
+  if (style.points) {
+    glEnableClientState(GL_COLOR_ARRAY);
+    if (!has_values_) glDisableClientState(GL_COLOR_ARRAY), glColor3f(0.1f, 0.1f, 0.1f);
+    glPointSize(4);
+    glDrawArrays(GL_POINTS, 0, GLsizei(vertex_count_));
+  }
+  glDisableClientState(GL_COLOR_ARRAY);
+  // The picked vertex and its neighbourhood, on top of everything.
+  if (style.picked >= 0 && std::size_t(style.picked) < vertex_count_) {
+    glDisable(GL_DEPTH_TEST);
+    glPointSize(8);
+    glColor3f(1.0f, 0.55f, 0.0f);
+    glDrawElements(GL_POINTS, GLsizei(style.neighbours.size()), GL_UNSIGNED_INT, style.neighbours.data());
+    glPointSize(12);
+    glColor3f(0.85f, 0.05f, 0.05f);
+    glDrawArrays(GL_POINTS, GLint(style.picked), 1);
+    glEnable(GL_DEPTH_TEST);
+  }
+  glPointSize(1);
   glDisableClientState(GL_VERTEX_ARRAY);
   glBindBuffer(GL_ARRAY_BUFFER, 0);
-  glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, 0);
 }
+
+bool edges_visible(const mesh_drawing& d, const display_style& style, const camera& cam, int height) {
+  constexpr double fewest_pixels = 6;  // shorter edges would fill the picture with lines
+  return style.edges && (!style.auto_hide_edges || d.mean_edge_length() * cam.pixels_per_unit(height) >= fewest_pixels);
+}
+
+namespace {
+
+// Pixel coordinates, origin at the bottom left, drawn over the scene.
+void use_pixel_coordinates(int width, int height) {
+  glMatrixMode(GL_PROJECTION);
+  glLoadIdentity();
+  glOrtho(0, width, 0, height, -1, 1);
+  glMatrixMode(GL_MODELVIEW);
+  glLoadIdentity();
+  glDisable(GL_DEPTH_TEST);
+  glDisable(GL_LIGHTING);
+}
+
+// A vertical bar of the ramp at the right edge, low values at the bottom
+// (the viewer writes the numbers beside it).
+void draw_colour_bar(int width, int height) {
+  use_pixel_coordinates(width, height);
+  double x0 = width - 40, x1 = width - 20, y0 = height * 0.25, y1 = height * 0.75;
+  glBegin(GL_QUAD_STRIP);
+  for (int i = 0; i <= 32; ++i) {
+    rgb c = colour_ramp(i / 32.0);
+    glColor3f(c[0], c[1], c[2]);
+    double y = y0 + (y1 - y0) * i / 32.0;
+    glVertex2d(x0, y);
+    glVertex2d(x1, y);
+  }
+  glEnd();
+  glEnable(GL_DEPTH_TEST);
+}
+
+}  // namespace
 
 box view_box(session* model, const mesh_drawing* drawing) {
   box b;
@@ -147,7 +273,7 @@ bool init_rendering(session* model, std::string& error) {
 }
 
 bool draw_frame(session* model, const mesh_drawing* fallback, const camera& cam, int width,
-                int height, std::string& error) {
+                int height, std::string& error, const display_style& style) {
   glViewport(0, 0, width, height);
   glClearColor(0.93f, 0.94f, 0.96f, 1);
   glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
@@ -176,18 +302,14 @@ bool draw_frame(session* model, const mesh_drawing* fallback, const camera& cam,
   if (model && model->has_block("render")) {
     if (!model->render()) error = model->error(), ok = false;
   } else if (fallback) {
-    fallback->draw();
+    fallback->draw(style, edges_visible(*fallback, style, cam, height));
   }
   if (ok && model && model->has_block("render_screen")) {
-    glMatrixMode(GL_PROJECTION);
-    glLoadIdentity();
-    glOrtho(0, width, 0, height, -1, 1);
-    glMatrixMode(GL_MODELVIEW);
-    glLoadIdentity();
-    glDisable(GL_DEPTH_TEST);
-    glDisable(GL_LIGHTING);
+    use_pixel_coordinates(width, height);
     if (!model->render_screen()) error = model->error(), ok = false;
   }
+  if (ok && fallback && fallback->has_values() && !(model && model->has_block("render")))
+    draw_colour_bar(width, height);
   glDisable(GL_LIGHTING);
   return ok;
 }

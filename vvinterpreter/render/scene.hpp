@@ -15,8 +15,23 @@ namespace vvi {
 
 class session;
 
-//! A mesh's faces (smooth-shaded) and edges in vertex buffers, for drawing
-//! meshes of millions of triangles at interactive rates.
+//! How the default drawing shows a mesh (the viewer's display toggles).
+struct display_style {
+  bool faces = true, edges = true, points = false;
+  bool flat = false;        //!< one normal per face instead of per vertex
+  bool back_faces = true;   //!< draw faces seen from behind
+  //! Leave out the edges when they would fill the picture (the mean edge
+  //! shorter than a few pixels).
+  bool auto_hide_edges = true;
+  //! Indices into the geometry's vertices: the picked vertex (drawn large)
+  //! and its neighbours (drawn smaller).
+  long picked = -1;
+  std::vector<std::uint32_t> neighbours;
+};
+
+//! A mesh's faces and edges in vertex buffers, for drawing meshes of
+//! millions of triangles at interactive rates; coloured by the geometry's
+//! values when it carries some (a colour bar shows the range).
 class mesh_drawing {
  public:
   mesh_drawing() = default;
@@ -24,25 +39,40 @@ class mesh_drawing {
   mesh_drawing& operator=(const mesh_drawing&) = delete;
   ~mesh_drawing();
 
-  //! New geometry (call with the GL context current).
-  void update(const vv_geometry& g);
-  void draw() const;
+  //! New geometry (call with the GL context current); flat: one normal per
+  //! face (the faces get their own corners).
+  void update(const vv_geometry& g, bool flat = false);
+  void draw(const display_style& style, bool edges_visible) const;
   const box& bounds() const { return bounds_; }
   std::size_t triangles() const { return triangle_indices_ / 3; }
+  std::size_t edges() const { return line_indices_ / 2; }
+  double mean_edge_length() const { return mean_edge_; }
+  //! The range of the values drawn as colours (has_values: there are some).
+  bool has_values() const { return has_values_; }
+  double value_min() const { return value_min_; }
+  double value_max() const { return value_max_; }
   //! Frees the GL buffers (before the context goes away).
   void release();
 
  private:
-  unsigned vertex_buffer_ = 0, triangle_buffer_ = 0, line_buffer_ = 0;
-  std::size_t triangle_indices_ = 0, line_indices_ = 0;
+  unsigned vertex_buffer_ = 0, triangle_buffer_ = 0, line_buffer_ = 0, flat_buffer_ = 0;
+  std::size_t vertex_count_ = 0, triangle_indices_ = 0, line_indices_ = 0, flat_corners_ = 0;
   box bounds_;
+  double mean_edge_ = 0;
+  bool has_values_ = false;
+  double value_min_ = 0, value_max_ = 0;
 };
 
 //! One frame: clear, the model's render block (or the default drawing of
-//! `fallback`), then its render_screen block in pixel coordinates. Returns
+//! `fallback` in `style`), then its render_screen block in pixel
+//! coordinates, and the colour bar when the drawing is coloured. Returns
 //! false with `error` set when a render block failed.
 bool draw_frame(session* model, const mesh_drawing* fallback, const camera& cam, int width,
-                int height, std::string& error);
+                int height, std::string& error, const display_style& style = {});
+
+//! Whether the edges are drawn: asked for, and (with auto_hide_edges) the
+//! mean edge at least a few pixels long in this view.
+bool edges_visible(const mesh_drawing& d, const display_style& style, const camera& cam, int height);
 
 //! The box the view must show: the proxy's view volume when the program set
 //! one, else the drawing's bounds, else the unit cube.

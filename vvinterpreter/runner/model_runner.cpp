@@ -137,8 +137,9 @@ std::string unknown_mesh(const session& model, const std::string& path, const st
 
 }  // namespace
 
-std::string model_runner::geometry(vv_geometry& out) const {
+std::string model_runner::geometry(vv_geometry& out, const std::string& value_field) const {
   out = vv_geometry{};
+  out.value_field = value_field.c_str();
   if (!model_) return "";
   const std::vector<std::string>& names = o_.meshes;
   if (std::string e = unknown_mesh(*model_, o_.model, names); !e.empty()) return e;
@@ -151,6 +152,23 @@ std::string model_runner::geometry(vv_geometry& out) const {
   if (!m) return "";
   const char* e = m->geometry(max_face(), &out);
   return e ? e : "";
+}
+
+std::string model_runner::describe_vertex(unsigned label, std::string& text) const {
+  if (!model_) return "no model is loaded";
+  const char* described = nullptr;
+  if (const char* e = model_->raw().describe_vertex(label, &described)) return o_.model + ": pick " + std::to_string(label) + ": " + e;
+  text = described;
+  return "";
+}
+
+std::vector<std::string> model_runner::file_objects() const {
+  std::vector<std::string> out;
+  if (!model_) return out;
+  std::string lines = model_->raw().file_objects();
+  for (std::size_t at = 0, end; (end = lines.find('\n', at)) != std::string::npos; at = end + 1)
+    out.push_back(lines.substr(at, end - at));
+  return out;
 }
 
 std::string model_runner::export_to(const std::string& path) const { return export_to(path, o_.meshes); }

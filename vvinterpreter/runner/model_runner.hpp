@@ -54,8 +54,14 @@ class model_runner {
   //! program's proxy.max_face (0: no limit).
   std::size_t max_face() const;
   //! The polygons of the chosen global meshes (--mesh: one, several, or by
-  //! default the first); "" or the error. Valid until the next call.
-  std::string geometry(vv_geometry& out) const;
+  //! default the first), with the numeric vertex property value_field per
+  //! vertex when asked; "" or the error. Valid until the next call.
+  std::string geometry(vv_geometry& out, const std::string& value_field = "") const;
+  //! A vertex by label: its properties, neighbourhood and records (text);
+  //! "" or the error.
+  std::string describe_vertex(unsigned label, std::string& text) const;
+  //! The files the model's file objects read (for watching them).
+  std::vector<std::string> file_objects() const;
   //! Writes the chosen meshes to a file (the format by its extension).
   std::string export_to(const std::string& path) const;
   std::string export_to(const std::string& path, const std::vector<std::string>& meshes) const;

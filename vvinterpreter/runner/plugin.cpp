@@ -116,6 +116,8 @@ std::unique_ptr<plugin> plugin::open(const std::string& path, std::string& error
   bind(p->error_frames, "vv_plugin_error_frames");
   bind(p->check, "vv_plugin_check");
   bind(p->params, "vv_plugin_params");
+  bind(p->describe_vertex, "vv_plugin_describe_vertex");
+  bind(p->file_objects, "vv_plugin_file_objects");
   if (!ok) return nullptr;
   return p;
 }

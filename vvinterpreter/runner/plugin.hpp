@@ -31,6 +31,8 @@ class plugin {
   const void* const* (*error_frames)(std::size_t*) = nullptr;
   const char* (*check)() = nullptr;
   const vv_param_entry* (*params)(std::size_t*) = nullptr;
+  const char* (*describe_vertex)(unsigned, const char**) = nullptr;
+  const char* (*file_objects)() = nullptr;
 
   const std::string& path() const { return path_; }
   //! The private copy that is loaded (what /proc/self/maps names).

@@ -66,8 +66,16 @@ bool session::check_neighbourhoods(const std::string& after) {
   return false;
 }
 
-bool session::start() { return run("start", plugin_->start) && check_neighbourhoods("start"); }
-bool session::end() { return run("end", plugin_->end); }
+// proxy.plot records against the step running: 0 in start, N in step N,
+// the last step's number in end.
+bool session::start() {
+  proxy().plot_step = 0;
+  return run("start", plugin_->start) && check_neighbourhoods("start");
+}
+bool session::end() {
+  proxy().plot_step = steps_;
+  return run("end", plugin_->end);
+}
 bool session::reread() { return run("reread", plugin_->reread); }
 // Drawing is not timed (it is not announced): it runs every frame.
 bool session::render_init() { return !has_block("render_init") || run("render_init", plugin_->render_init, 0, false); }
@@ -77,6 +85,7 @@ bool session::render_screen() {
 }
 
 bool session::step() {
+  proxy().plot_step = steps_ + 1;
   auto t = std::chrono::steady_clock::now();
   bool ok = run("step", plugin_->step, steps_ + 1);
   last_step_ms_ = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t).count();

@@ -8,7 +8,13 @@ panel_actions draw_panel(const panel_state& s) {
   panel_actions a;
   ImGui::SetNextWindowPos(ImVec2(10, 10), ImGuiCond_FirstUseEver);
   ImGui::SetNextWindowSizeConstraints(ImVec2(300, 0), ImVec2(520, 2000));
-  ImGui::Begin("vv", nullptr, ImGuiWindowFlags_AlwaysAutoResize);
+  bool open = ImGui::Begin("vv", nullptr, ImGuiWindowFlags_AlwaysAutoResize);
+  a.panel_collapsed = !open;
+  a.panel_right = ImGui::GetWindowPos().x + ImGui::GetWindowSize().x;
+  if (!open) {
+    ImGui::End();
+    return a;
+  }
   ImGui::TextUnformatted(s.model.c_str());
   ImGui::TextDisabled("%s", s.status.c_str());
   ImGui::Separator();
@@ -57,10 +63,14 @@ panel_actions draw_panel(const panel_state& s) {
     ImGui::PopStyleColor();
   }
   if (!s.warnings.empty() && ImGui::CollapsingHeader("Compiler warnings")) ImGui::TextWrapped("%s", s.warnings.c_str());
+  draw_parameters(s, a);
+  draw_plots(s);
+  draw_display(s, a);
+  draw_inspector(s, a);
   ImGui::Separator();
   ImGui::TextDisabled("drag: rotate   right-drag: pan   wheel: zoom");
   ImGui::TextDisabled("space: step  a: animate  w: rewind  f: fit  s: screenshot");
-  ImGui::TextDisabled("esc: stop  ctrl+q: quit");
+  ImGui::TextDisabled("ctrl+click: pick a vertex  esc: stop  ctrl+q: quit");
   ImGui::End();
   return a;
 }

@@ -14,9 +14,36 @@ const std::map<std::string, script_command::kind_t> plain_commands = {
     {"end", script_command::end},       {"reread", script_command::reread},
     {"recompile", script_command::recompile}, {"fit", script_command::fit},
     {"stop", script_command::stop},     {"quit", script_command::quit},
+    {"save-params", script_command::save_params},
 };
 
+// What `show` switches.
+const char* const shown_things[] = {"faces", "edges", "points", "flat", "back-faces", "auto-fit"};
+
 }  // namespace
+
+const char* const script_help =
+    "  step [N]              run N steps (default 1)\n"
+    "  run                   run the proxy's number of steps\n"
+    "  rewind                start again from a fresh instance\n"
+    "  end                   run the end block\n"
+    "  reread                reread the model's files (util::Function, Palette, ...)\n"
+    "  recompile             rebuild and reload the model\n"
+    "  fit                   fit the view to the model\n"
+    "  screenshot FILE.png   save the view without the panel\n"
+    "  window-screenshot F   save the whole window, panel included\n"
+    "  export MESH FILE      write a global mesh (.vvm .obj .off .ply .stl)\n"
+    "  rotate DX DY          turn the view by degrees\n"
+    "  zoom F                come closer by the factor F\n"
+    "  wait MS               pause, beside a running step\n"
+    "  stop                  end a step that runs long (the model restarts at its last good state)\n"
+    "  pick LABEL            select the vertex with this label and print it to stdout\n"
+    "  set NAME=VALUE        set a parameter (a `param` of the program)\n"
+    "  save-params           write the parameters' values into their lines of the .vvp\n"
+    "  color-by NAME|none    colour by a numeric vertex property, or not\n"
+    "  show WHAT on|off      faces, edges, points, flat, back-faces, auto-fit\n"
+    "  plots FILE.csv        write the proxy.plot series\n"
+    "  quit                  close the window\n";
 
 std::vector<script_command> parse_script(const std::string& text, const std::string& name, std::string& error) {
   std::vector<script_command> out;
@@ -61,6 +88,28 @@ std::vector<script_command> parse_script(const std::string& text, const std::str
     } else if (word == "export") {
       c.kind = script_command::export_mesh;
       ok = static_cast<bool>(words >> c.mesh >> c.path);
+    } else if (word == "pick") {
+      c.kind = script_command::pick;
+      ok = static_cast<bool>(words >> c.count) && c.count >= 1;
+    } else if (word == "set") {
+      c.kind = script_command::set;
+      std::string assignment;
+      std::size_t eq = 0;
+      ok = static_cast<bool>(words >> assignment) && (eq = assignment.find('=')) != std::string::npos && eq > 0;
+      if (ok) c.name = assignment.substr(0, eq), c.value = assignment.substr(eq + 1);
+    } else if (word == "color-by") {
+      c.kind = script_command::color_by;
+      ok = static_cast<bool>(words >> c.name);
+      if (c.name == "none") c.name.clear();
+    } else if (word == "show") {
+      c.kind = script_command::show;
+      ok = static_cast<bool>(words >> c.name >> c.value) && (c.value == "on" || c.value == "off");
+      bool known = false;
+      for (const char* thing : shown_things) known = known || c.name == thing;
+      ok = ok && known;
+    } else if (word == "plots") {
+      c.kind = script_command::plots;
+      ok = static_cast<bool>(words >> c.path);
     } else if (auto plain = plain_commands.find(word); plain != plain_commands.end()) {
       c.kind = plain->second;
     } else {

@@ -18,7 +18,12 @@
 #include "render/image.hpp"
 #include "render/scene.hpp"
 #include "runner/model_runner.hpp"
+#include "runner/parameter_source.hpp"
+#include "runner/plots.hpp"
 #include "viewer/file_watch.hpp"
+#include "viewer/function_editor.hpp"
+#include "viewer/inspection.hpp"
+#include "viewer/picking.hpp"
 #include "viewer/model_worker.hpp"
 #include "viewer/panel.hpp"
 #include "viewer/script.hpp"
@@ -42,6 +47,7 @@ class viewer {
  public:
   viewer(const options& o, const viewer_resume& r) : o_(o), resume_(r), runner_(o) {
     replay_ = r.replay;
+    color_by_ = o.color_by;
     script_pos_ = r.script_pos;
     screenshots_ = r.screenshots;
     if (r.restarted) {
@@ -196,7 +202,7 @@ class viewer {
       else error_.clear();
       refresh_drawing();
       if (!camera_set_) {
-        cam_.fit(view_box(runner_.model(), &drawing_));
+        fit_view();
         camera_set_ = true;  // later reloads keep the view
       }
       say(verb + " " + o_.model + (pending_cached_ && verb != "rewound" ? " (cached)" : ""));
@@ -231,6 +237,22 @@ class viewer {
     worker_.submit([this, op] { (runner_.*op)(); }, what);
   }
 
+  // "Reread files", or a file a file object reads was saved: the model
+  // keeps its step; a file that does not read keeps its last good values.
+  void submit_reread() {
+    bool on_save = reread_on_save_;
+    reread_on_save_ = false;
+    job_ = [this, on_save] {
+      if (!runner_.error().empty()) return show_error(runner_.error(), runner_.error());
+      std::string files;
+      for (const std::string& f : file_objects_) files += (files.empty() ? "" : ", ") + f;
+      if (on_save || !files.empty()) say("reread " + (files.empty() ? std::string("(no files)") : files));
+      refresh_drawing();
+    };
+    runner_.clear_error();
+    worker_.submit([this] { runner_.reread(); }, "reread");
+  }
+
   // When a job ended: its follow-up on this (the GL) thread.
   void finish_job() {
     if (!worker_.take_finished() || !job_) return;
@@ -259,7 +281,7 @@ class viewer {
       submit_simple("end", &model_runner::end, true);
     } else if (reread_requested_) {
       reread_requested_ = false;
-      submit_simple("reread", &model_runner::reread, true);
+      submit_reread();
     } else if (run_left_ > 0) {
       --run_left_;
       submit_step();
@@ -289,9 +311,113 @@ class viewer {
   void refresh_drawing() {
     if (!runner_.model()) return;
     vv_geometry g{};
-    std::string e = runner_.geometry(g);
-    if (!e.empty()) show_error(e, e);
-    else drawing_.update(g);
+    std::string e = runner_.geometry(g, color_by_);
+    if (e.empty() && !color_by_.empty() && !g.values) {
+      std::string numeric = g.numeric_fields ? g.numeric_fields : "";
+      e = "colour by " + color_by_ + ": the vertices have no numeric property " + color_by_ +
+          (numeric.empty() ? " (they have none)" : " (they have " + numeric + ")");
+      color_by_.clear();
+      show_error(e, e);
+      e = runner_.geometry(g);
+    }
+    if (!e.empty()) return show_error(e, e);
+    drawing_.update(g, style_.flat);
+    inspect_.update(g);
+    if (std::string pe = inspect_.describe(runner_); !pe.empty()) show_error(pe, pe);
+    if (auto_fit_ && !camera_moved_ && camera_set_) fit_view();
+    refresh_model_views();
+  }
+
+  // What the panel shows of the model's state, read while the model is
+  // idle (the panel is drawn every frame, also while a step runs).
+  void refresh_model_views() {
+    parameters_.clear();
+    plots_.clear();
+    if (!runner_.model()) return;
+    for (const vv_param_entry* p : parameters_of(*runner_.model()))
+      parameters_.push_back({p->name, p->type, parameter_text(*p), parameter_number(*p), p->has_range != 0, p->lo,
+                             p->hi, p->line});
+    for (const vv::plot_series& series : runner_.model()->proxy().plots) {
+      plot_view v;
+      v.name = series.name;
+      v.values.assign(series.values.begin(), series.values.end());
+      if (!series.steps.empty()) v.first_step = series.steps.front(), v.last_step = series.steps.back();
+      if (!series.values.empty()) v.last = series.values.back();
+      plots_.push_back(std::move(v));
+    }
+    std::vector<std::string> files = runner_.file_objects();
+    if (files != file_objects_) file_objects_ = files, objects_watch_.watch(files);
+  }
+
+  // ---- looking into the model ----
+  void set_parameter(const std::string& name, const std::string& text) {
+    if (busy() || !runner_.model()) return;
+    std::string e = runner_.set_parameter(name, text);
+    if (!e.empty()) return show_error(e, e);
+    say("set " + name + " = " + text);
+    if (rewind_on_change_) {
+      submit_load(runner_.plugin_path(), runner_.model()->steps_done(), "rewound");
+      return;
+    }
+    refresh_model_views();
+  }
+
+  void save_parameters() {
+    if (busy() || !runner_.model()) return;
+    // Only what the user set: the other values stay as the file writes them.
+    std::vector<parameter_value_at> values;
+    for (const parameter_setting& set : runner_.parameter_settings())
+      if (const vv_param_entry* p = find_parameter(*runner_.model(), set.name))
+        values.push_back({p->name, parameter_text(*p), p->line});
+    if (values.empty()) return say("no parameter was changed: nothing to save");
+    std::string e = save_parameter_values(o_.model, values);
+    if (e.empty()) say("saved the parameters in " + o_.model);
+    else show_error(e, e);
+  }
+
+  void pick(unsigned label) {
+    if (busy() || !runner_.model()) return;
+    inspect_.pick_label(label);
+    if (std::string e = inspect_.describe(runner_); !e.empty()) return show_error(e, e);
+    std::printf("%s", inspect_.text().c_str());
+    std::fflush(stdout);
+  }
+
+  void pick_at(double x, double y) {
+    int w = 0, h = 0;
+    glfwGetWindowSize(window_, &w, &h);
+    long index = pick_vertex(inspect_.positions(), cam_, w, h, x, y);
+    inspect_.pick_index(index);
+    if (inspect_.picked_label()) pick(inspect_.picked_label());
+  }
+
+  void set_style(const display_style& style) {
+    bool rebuild = style.flat != style_.flat;
+    style_ = style;
+    if (rebuild && !busy()) refresh_drawing();
+  }
+
+  void colour_by(const std::string& field) {
+    color_by_ = field;
+    if (!busy()) refresh_drawing();
+  }
+
+  void show(const std::string& what, bool on) {
+    display_style st = style_;
+    if (what == "faces") st.faces = on;
+    else if (what == "edges") st.edges = on;
+    else if (what == "points") st.points = on;
+    else if (what == "flat") st.flat = on;
+    else if (what == "back-faces") st.back_faces = on;
+    else if (what == "auto-fit") auto_fit_ = on, camera_moved_ = false;
+    set_style(st);
+  }
+
+  void write_plots_to(const std::string& path) {
+    if (!runner_.model()) return show_error("plots " + path + ": no model is loaded", "plots: no model is loaded");
+    std::string e = write_plots(path, runner_.model()->proxy());
+    if (e.empty()) say("wrote " + path);
+    else show_error(e, e);
   }
 
   // ---- one frame ----
@@ -305,6 +431,8 @@ class viewer {
     if (t - last_watch_ >= 0.25) {
       last_watch_ = t;
       if (!building_ && watch_.changed()) start_build(false);
+      // A file a file object reads was saved: reread it, keeping the step.
+      if (objects_watch_.changed() && runner_.model()) reread_requested_ = reread_on_save_ = true;
     }
     finish_build();
     finish_job();
@@ -318,19 +446,33 @@ class viewer {
       // While the model's code runs, its state is not to be read: draw the
       // last drawing without the model's render blocks.
       session* model = busy() || render_failed_ ? nullptr : runner_.model();
-      if (!draw_frame(model, &drawing_, cam_, w, h, e)) {
-        render_failed_ = true;  // once: the same error would repeat every frame
-        show_error(e, e);
-      }
-      if (!busy()) {
+      display_style style = style_;
+      style.picked = inspect_.picked_index();
+      style.neighbours = inspect_.neighbours();
+      auto draw = [&] {
+        if (!draw_frame(model, &drawing_, cam_, w, h, e, style)) {
+          render_failed_ = true;  // once: the same error would repeat every frame
+          show_error(e, e);
+        }
+      };
+      // Screenshots frame the model in the whole picture; the window shows
+      // it beside the panel.
+      if (!busy() && (record_frame_ || !shot_path_.empty())) {
+        cam_.set_shift(0);
+        draw();
         capture(w, h);
-        drawn_since_job_ = true;
       }
+      cam_.set_shift(panel_shift_);
+      draw();
+      if (!busy()) drawn_since_job_ = true;
     }
     ImGui_ImplOpenGL2_NewFrame();
     ImGui_ImplGlfw_NewFrame();
     ImGui::NewFrame();
     panel_actions a = draw_panel(panel());
+    panel_shift_ = shift_beside_panel(a);
+    edit_functions();
+    label_colour_bar();
     ImGui::Render();
     ImGui_ImplOpenGL2_RenderDrawData(ImGui::GetDrawData());
     if (!window_shot_path_.empty() && w > 0 && h > 0) {
@@ -376,10 +518,65 @@ class viewer {
     if (a.fit) fit();
     if (a.screenshot) shot_path_ = next_screenshot_name();
     if (a.toggle_replay) replay_ = !replay_;
+    for (const auto& [name, text] : a.set_parameters) set_parameter(name, text);
+    if (a.save_parameters) save_parameters();
+    if (a.toggle_rewind_on_change) rewind_on_change_ = !rewind_on_change_;
+    if (a.style_changed) set_style(a.style);
+    if (a.toggle_auto_fit) {
+      auto_fit_ = !auto_fit_;
+      camera_moved_ = false;
+      if (auto_fit_) fit();
+    }
+    if (a.color_by_changed) colour_by(a.color_by);
+    if (a.clear_pick) inspect_.clear();
   }
 
   void fit() {
-    if (!busy()) cam_.fit(view_box(runner_.model(), &drawing_));
+    if (!busy()) fit_view();
+  }
+
+  // The whole model in view, seen from a little above and to the side when
+  // it is not flat (a pyramid face-on is a flat diamond); a flat model in
+  // the xy-plane is seen face-on.
+  void fit_view() {
+    box b = view_box(runner_.model(), &drawing_);
+    cam_.fit(b);
+    glm::dvec3 size = b.max - b.min;
+    if (!b.empty && size.z > 0.01 * glm::length(size)) cam_.look_from(30, 25);
+  }
+
+  // The function editor's Save writes the file; the file watch then has
+  // the model reread it.
+  void edit_functions() {
+    std::string said, error;
+    editor_.draw(file_objects_, said, error);
+    if (!said.empty()) say(said);
+    if (!error.empty()) show_error(error, error);
+  }
+
+  // Half the panel's width, as a fraction of the window: the model is
+  // centred in the part of the window the panel leaves free, when the
+  // window is wide enough for both (else the panel, collapsible, floats).
+  double shift_beside_panel(const panel_actions& a) const {
+    int w = 0, h = 0;
+    glfwGetWindowSize(window_, &w, &h);
+    if (a.panel_collapsed || w <= 0 || w < 2.2 * a.panel_right) return 0;
+    return a.panel_right / (2.0 * w);
+  }
+
+  // The numbers at the ends of the colour bar (drawn by draw_frame).
+  void label_colour_bar() {
+    if (!drawing_.has_values() || (runner_.model() && runner_.model()->has_block("render"))) return;
+    ImVec2 size = ImGui::GetIO().DisplaySize;
+    ImDrawList* d = ImGui::GetForegroundDrawList();
+    char text[64];
+    const ImU32 ink = IM_COL32(30, 30, 40, 255);
+    std::snprintf(text, sizeof text, "%.4g", drawing_.value_max());
+    d->AddText(ImVec2(size.x - 44 - ImGui::CalcTextSize(text).x, size.y * 0.25f - 8), ink, text);
+    std::snprintf(text, sizeof text, "%.4g", drawing_.value_min());
+    d->AddText(ImVec2(size.x - 44 - ImGui::CalcTextSize(text).x, size.y * 0.75f - 8), ink, text);
+    d->AddText(ImVec2(size.x - 44 - ImGui::CalcTextSize(color_by_.c_str()).x, size.y * 0.75f + 8), ink,
+               color_by_.c_str());
   }
 
   std::string next_screenshot_name() {
@@ -413,6 +610,19 @@ class viewer {
     s.error = error_;
     s.warnings = warnings_;
     s.message = message_;
+    s.parameters = parameters_;
+    s.rewind_on_change = rewind_on_change_;
+    s.plots = plots_;
+    s.style = style_;
+    s.auto_fit = auto_fit_ && !camera_moved_;
+    s.color_by = color_by_;
+    s.numeric_fields = inspect_.numeric_fields();
+    s.has_values = drawing_.has_values();
+    s.value_min = drawing_.value_min();
+    s.value_max = drawing_.value_max();
+    s.counts = inspect_.counts();
+    s.picked = inspect_.text();
+    s.file_objects = file_objects_;
     return s;
   }
 
@@ -438,6 +648,11 @@ class viewer {
   // ---- input ----
   void on_button(int button, int action, int mods) {
     if (ImGui::GetIO().WantCaptureMouse && action == GLFW_PRESS) return;
+    if (action == GLFW_PRESS && button == GLFW_MOUSE_BUTTON_LEFT && (mods & GLFW_MOD_CONTROL)) {
+      glfwGetCursorPos(window_, &mouse_x_, &mouse_y_);
+      pick_at(mouse_x_, mouse_y_);
+      return;
+    }
     if (action == GLFW_PRESS) {
       dragging_ = (button == GLFW_MOUSE_BUTTON_LEFT && !(mods & GLFW_MOD_SHIFT)) ? 1 : 2;
       glfwGetCursorPos(window_, &mouse_x_, &mouse_y_);
@@ -452,12 +667,13 @@ class viewer {
       glfwGetWindowSize(window_, &w, &h);
       if (dragging_ == 1) cam_.drag_rotate(mouse_x_, mouse_y_, x, y, w, h);
       else cam_.pan(x - mouse_x_, y - mouse_y_, h);
+      camera_moved_ = true;  // the user's view: auto-fit stops
     }
     mouse_x_ = x, mouse_y_ = y;
   }
 
   void on_scroll(double dy) {
-    if (!ImGui::GetIO().WantCaptureMouse) cam_.zoom(dy > 0 ? 1.15 : 1 / 1.15);
+    if (!ImGui::GetIO().WantCaptureMouse) cam_.zoom(dy > 0 ? 1.15 : 1 / 1.15), camera_moved_ = true;
   }
 
   void on_key(int key, int action, int mods) {
@@ -537,6 +753,12 @@ class viewer {
         case script_command::wait: wait_until_ = now_seconds() + c.count / 1000.0; return;
         case script_command::stop: stop(); break;
         case script_command::quit: glfwSetWindowShouldClose(window_, 1); return;
+        case script_command::pick: pick(static_cast<unsigned>(c.count)); break;
+        case script_command::set: set_parameter(c.name, c.value); return;
+        case script_command::save_params: save_parameters(); break;
+        case script_command::color_by: colour_by(c.name); break;
+        case script_command::show: show(c.name, c.value == "on"); break;
+        case script_command::plots: write_plots_to(c.path); break;
       }
     }
   }
@@ -570,6 +792,17 @@ class viewer {
   mesh_drawing drawing_;
   camera cam_;
   bool camera_set_ = false;
+  display_style style_;
+  double panel_shift_ = 0;
+  bool auto_fit_ = true, camera_moved_ = false;  // auto-fit until the user moves the view
+  std::string color_by_;
+  inspection inspect_;
+  function_editor editor_;
+  std::vector<parameter_view> parameters_;
+  bool rewind_on_change_ = false;
+  std::vector<plot_view> plots_;
+  file_watch objects_watch_;  // the files the model's file objects read
+  std::vector<std::string> file_objects_;
   file_watch watch_;
   std::vector<file_watch::stamp> stamps_before_build_;
   std::future<build_result> build_;
@@ -577,7 +810,7 @@ class viewer {
   bool pending_load_ = false, pending_cached_ = false;
   std::string pending_plugin_;
   unsigned pending_steps_ = 0;
-  bool rewind_requested_ = false, end_requested_ = false, reread_requested_ = false;
+  bool rewind_requested_ = false, end_requested_ = false, reread_requested_ = false, reread_on_save_ = false;
   bool replay_ = true;
   std::string status_ = "starting", error_, warnings_, message_;
   bool animating_ = false, render_failed_ = false, record_frame_ = false;

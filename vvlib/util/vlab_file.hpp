@@ -23,8 +23,8 @@
 
 namespace util::vlab {
 
-//! The whole file. Relative paths are relative to the working directory
-//! (the host runs a model in the model's folder).
+//! The whole file (the file objects resolve relative names first:
+//! vv/file_objects.hpp).
 inline std::string read_bytes(const std::string& path) {
   std::error_code ec;
   // An ifstream opens a directory without complaint and reads nothing.

@@ -12,11 +12,13 @@
 #include <array>
 #include <cstddef>
 #include <exception>
+#include <filesystem>
 #include <initializer_list>
 #include <string>
 #include <utility>
 #include <vector>
 
+#include "io/files.hpp"
 #include "proxy.hpp"
 
 namespace vv {
@@ -31,6 +33,16 @@ class file_registry {
 
   void remove(file_object* object) {
     for (auto& list : lists_) list.erase(std::remove(list.begin(), list.end(), object), list.end());
+  }
+
+  //! Where relative file names lead: the model's folder, set before the
+  //! program's globals are made (the generated code does it first), so
+  //! that `util::Function f("growth.func");` finds the file beside the
+  //! .vvp whatever the host's working directory. Empty: the working directory.
+  void set_base_dir(std::string dir) { base_dir_ = std::move(dir); }
+  std::string resolve(const std::string& file) const {
+    // "model/../data/f.func" reads as "data/f.func" in messages and lists.
+    return std::filesystem::path(io::resolve(base_dir_, file)).lexically_normal().string();
   }
 
   const std::vector<file_object*>& objects(file_kind kind) const {
@@ -56,6 +68,7 @@ class file_registry {
 
  private:
   std::array<std::vector<file_object*>, file_kind_count> lists_;
+  std::string base_dir_;
 };
 
 //! The registry of this program. Created by the first file object, so it
@@ -106,7 +119,12 @@ class registered_file : public file_object {
   const std::string& getFilename() const { return path_; }
 
  protected:
-  explicit registered_file(std::string file = {}) : path_(std::move(file)) { file_objects().add(Kind, this); }
+  //! The file is resolved once, here: path() names the file read, in
+  //! errors and for a host that watches it.
+  explicit registered_file(const std::string& file = {})
+      : path_(file.empty() ? file : file_objects().resolve(file)) {
+    file_objects().add(Kind, this);
+  }
   registered_file(const registered_file& other) : file_object(other), path_(other.path_) {
     file_objects().add(Kind, this);
   }

@@ -19,11 +19,15 @@
 //                                         // the union of several global meshes
 //   const char* vv_plugin_check(void);     // NULL, or the first broken neighbourhood
 //   const vv_param_entry* vv_plugin_params(size_t* count);  // `param` globals
+//   const char* vv_plugin_describe_vertex(unsigned label, const char** text);
+//                                         // a vertex, its neighbourhood and records
+//   const char* vv_plugin_file_objects(void);  // the files the model's file objects read
 //   const void* const* vv_plugin_error_frames(size_t* count);
 //                                         // where the last error without a
 //                                         // source location was raised
 #pragma once
 
+#include <algorithm>
 #include <cstddef>
 #include <cstdint>
 #include <cstdlib>
@@ -37,13 +41,14 @@
 #include "io/positions.hpp"
 #include "io/mesh_io.hpp"
 #include "io/vvm.hpp"
+#include "inspect.hpp"
 #include "mesh.hpp"
 #include "neighbourhood_check.hpp"
 #include "orbits.hpp"
 #include "polylines.hpp"
 #include "proxy.hpp"
 
-#define VV_PLUGIN_ABI_VERSION 3
+#define VV_PLUGIN_ABI_VERSION 4
 #define VV_PLUGIN_EXPORT extern "C" __attribute__((visibility("default")))
 
 extern "C" {
@@ -68,6 +73,13 @@ struct vv_geometry {
   std::size_t line_count;            //!< polylines (a closed one repeats its first vertex)
   const std::uint32_t* line_offsets; //!< line i is line_vertices[offsets[i] .. offsets[i+1])
   const std::uint32_t* line_vertices;
+  const std::uint32_t* labels;       //!< the label of each vertex (picking)
+  //! In: a numeric vertex property to read per vertex (NULL or "": none).
+  const char* value_field;
+  //! Out: value_field of each vertex; NULL when there is no numeric
+  //! vertex property of that name.
+  const double* values;
+  const char* numeric_fields;        //!< the numeric vertex properties, "a, b"
 };
 
 //! A parameter of the program (`param TYPE NAME = VALUE [in [LO, HI]];`):
@@ -114,6 +126,11 @@ const char* vv_plugin_union_geometry(const char* const* names, std::size_t count
                                      vv_geometry* out);
 //! The program's parameters (`param` globals), in source order.
 const vv_param_entry* vv_plugin_params(std::size_t* count);
+//! Describes the vertex with this label (vv/inspect.hpp) in *text; NULL,
+//! or the error (no such vertex in any global mesh).
+const char* vv_plugin_describe_vertex(unsigned label, const char** text);
+//! The files the model's file objects read (vv/file_objects.hpp), one per line.
+const char* vv_plugin_file_objects(void);
 //! Return addresses of the last error whose message has no source location.
 const void* const* vv_plugin_error_frames(std::size_t* count);
 //! The first broken neighbourhood of any global mesh, with the lines that
@@ -131,6 +148,9 @@ struct exchange {
   std::vector<double> positions;
   std::vector<std::uint32_t> face_offsets, face_vertices;
   std::vector<std::uint32_t> line_offsets, line_vertices;
+  std::vector<std::uint32_t> labels;
+  std::vector<double> values;
+  std::string numeric_fields, text;
   std::shared_ptr<void> union_mesh;  //!< the last union_geometry's mesh
   std::vector<char> was_symmetric;   //!< per global mesh, at the last check
 };
@@ -158,6 +178,7 @@ const char* guarded(exchange& x, Fn&& fn) noexcept {
 template <class Tr>
 void configure(context<Tr>& ctx, const vv_plugin_settings& s, const char* source_dir = "") {
   ctx.base_dir = s.model_dir && *s.model_dir ? s.model_dir : source_dir;
+  file_objects().set_base_dir(ctx.base_dir);
   ctx.seed(s.seed);
   ctx.strict_old_state = s.strict_old_state != 0;
   ctx.track_edits(s.check != 0);
@@ -180,6 +201,7 @@ const char* geometry(exchange& x, const mesh<Tr>& m, std::size_t max_face, vv_ge
     x.face_vertices.clear();
     x.line_offsets.assign(1, 0u);
     x.line_vertices.clear();
+    x.labels.clear();
     using VP = typename Tr::vertex_props;
     if constexpr (detail::has_pos<VP>::value) {
       for (std::uint32_t id : m.slots()) {
@@ -209,6 +231,14 @@ const char* geometry(exchange& x, const mesh<Tr>& m, std::size_t max_face, vv_ge
     out->line_count = x.line_offsets.size() - 1;
     out->line_offsets = x.line_offsets.data();
     out->line_vertices = x.line_vertices.data();
+    std::vector<std::uint32_t> ids;
+    for (std::uint32_t id : m.slots())
+      if (id) ids.push_back(id), x.labels.push_back(m.ctx()->label(id));
+    out->labels = x.labels.data();
+    x.numeric_fields = numeric_vertex_fields<Tr>();
+    out->numeric_fields = x.numeric_fields.c_str();
+    bool wanted = out->value_field && *out->value_field;
+    out->values = wanted && numeric_field_values(*m.ctx(), ids, out->value_field, x.values) ? x.values.data() : nullptr;
   });
 }
 
@@ -247,6 +277,35 @@ const char* union_geometry(exchange& x, const named_mesh<Tr> (&all)[N], const ch
   const char* e = guarded(x, [&] { x.union_mesh = std::make_shared<mesh<Tr>>(union_of(all, names, count)); });
   if (e) return e;
   return geometry(x, *std::static_pointer_cast<mesh<Tr>>(x.union_mesh), max_face, out);
+}
+
+//! vv_plugin_describe_vertex over the global meshes.
+template <class Tr, std::size_t N>
+const char* describe_vertex(exchange& x, const named_mesh<Tr> (&all)[N], unsigned label,
+                            const char** text) noexcept {
+  return guarded(x, [&] {
+    std::vector<const mesh<Tr>*> meshes;
+    std::vector<std::string> names;
+    for (const named_mesh<Tr>& n : all) meshes.push_back(n.m), names.push_back(n.name);
+    context<Tr>& ctx = *all[0].m->ctx();
+    std::uint32_t id = slot_of_label(ctx, meshes, label);
+    if (!id) throw std::runtime_error("no global mesh holds a vertex " + std::to_string(label));
+    x.text = vv::describe_vertex(ctx, meshes, names, id);
+    *text = x.text.c_str();
+  });
+}
+
+//! vv_plugin_file_objects: the registered objects' files and those of the
+//! objects the program put into the proxy's lists, one per line.
+inline const char* file_object_paths(exchange& x, const proxy& p) noexcept {
+  std::vector<std::string> paths = file_objects().paths();
+  for (const auto* list : {&p.materials, &p.palettes, &p.functions, &p.contours})
+    for (const file_object* f : *list)
+      if (f && !f->path().empty() && std::find(paths.begin(), paths.end(), f->path()) == paths.end())
+        paths.push_back(f->path());
+  x.text.clear();
+  for (const std::string& path : paths) x.text += path + "\n";
+  return x.text.c_str();
 }
 
 //! vv_plugin_check: a mesh that was symmetric at the last check must still

@@ -25,6 +25,14 @@ class file_object {
 // Defined in file_objects.hpp, included at the end.
 inline void reread_file_objects(std::initializer_list<const std::vector<file_object*>*> proxy_lists);
 
+//! A quantity a program records over steps (proxy.plot): values[i] was
+//! recorded at steps[i].
+struct plot_series {
+  std::string name;
+  std::vector<unsigned> steps;
+  std::vector<double> values;
+};
+
 struct proxy {
   unsigned steps = 0;         //!< steps the host's "run" command performs
   unsigned delay_msec = 0;    //!< pause between animated steps
@@ -42,6 +50,26 @@ struct proxy {
 
   //! File-backed objects, by kind, re-read on the host's command.
   std::vector<file_object*> materials, palettes, functions, contours;
+
+  //! Series recorded by plot(), in the order first recorded.
+  std::vector<plot_series> plots;
+  //! The step being run (0 in start), set by the host before each block.
+  unsigned plot_step = 0;
+
+  //! `proxy.plot("cells", n)`: records the value for the current step (a
+  //! second value in the same step replaces the first).
+  void plot(const std::string& name, double value) {
+    plot_series* s = nullptr;
+    for (plot_series& p : plots)
+      if (p.name == name) s = &p;
+    if (!s) s = &plots.emplace_back(plot_series{name, {}, {}});
+    if (!s->steps.empty() && s->steps.back() == plot_step) {
+      s->values.back() = value;
+      return;
+    }
+    s->steps.push_back(plot_step);
+    s->values.push_back(value);
+  }
 
   //! Rereads the objects in these lists and the registered ones, each once.
   void reread_files() { reread_file_objects({&materials, &palettes, &functions, &contours}); }

@@ -1,0 +1,187 @@
+// Looking into a model and steering it (issue 10): plots recorded with
+// proxy.plot (batch --plots, script `plots`), a vertex described by label
+// (--pick, script `pick`), colour by a numeric property (--color-by),
+// parameters set and saved from the viewer, file objects reread when their
+// file is saved, and --help listing every script command.
+#include "viewer_harness.hpp"
+
+namespace {
+
+const std::string inspect_model = VV_TESTS_DIR "/models/inspect.vvp";
+
+test_run::result batch(const std::vector<std::string>& args) {
+  std::vector<std::string> argv = {"--batch"};
+  argv.insert(argv.end(), args.begin(), args.end());
+  return test_run::run(test_run::interpreter(argv), 280);
+}
+
+// The apex of the double pyramid after one step: its properties, its four
+// neighbours in the file's rotation order (labels 4 3 2 1) with 3 flagged,
+// and the records step 1 wrote (mark = the neighbour's label).
+const std::string apex_after_one_step =
+    "vertex 5\n"
+    "  in meshes: S\n"
+    "  properties:\n"
+    "    pos = 0 1.4142 0\n"
+    "    height = 1.4142\n"
+    "    visits = 1\n"
+    "  neighbourhood (4, rotation order, [flagged]): 4 [3] 2 1\n"
+    "  half-edge records:\n"
+    "    5 -> 4:\n      mark = 4\n"
+    "    5 -> 3:\n      mark = 3\n"
+    "    5 -> 2:\n      mark = 2\n"
+    "    5 -> 1:\n      mark = 1\n";
+
+TEST(Plots, BatchWritesOneColumnPerSeriesAndOneRowPerStep) {
+  std::string d = fresh_dir("plots_batch");
+  test_run::result r = batch({"--quiet", "--steps", "3", "--plots", d + "plots.csv", inspect_model});
+  ASSERT_EQ(r.status, 0) << report(r);
+  // Start records only "vertices" (step 0); "even" only at even steps; a
+  // name with a comma is quoted; 100/3 reads back exactly.
+  EXPECT_EQ(slurp(d + "plots.csv"),
+            "step,vertices,\"growth, %\",even\n"
+            "0,6,,\n"
+            "1,6,100,\n"
+            "2,6,50,2\n"
+            "3,6,33.333333333333336,\n");
+}
+
+TEST(Plots, AModelWithoutPlotsWritesTheHeaderOnly) {
+  std::string d = fresh_dir("plots_none");
+  test_run::result r = batch({"--quiet", "--plots", d + "plots.csv", loop_model});
+  ASSERT_EQ(r.status, 0) << report(r);
+  EXPECT_EQ(slurp(d + "plots.csv"), "step\n");
+}
+
+TEST(Pick, BatchDescribesAVertexItsNeighbourhoodFlagAndRecords) {
+  test_run::result r = batch({"--quiet", "--steps", "1", "--pick", "5", inspect_model});
+  ASSERT_EQ(r.status, 0) << report(r);
+  EXPECT_EQ(r.out, apex_after_one_step) << report(r);
+}
+
+TEST(Pick, AnUnknownLabelIsOneLineAndFails) {
+  test_run::result r = batch({"--quiet", "--pick", "99", inspect_model});
+  EXPECT_EQ(r.status, 1) << report(r);
+  EXPECT_EQ(viewer_errors(r.err),
+            std::vector<std::string>{"vvinterpreter: " + inspect_model + ": pick 99: no global mesh holds a vertex 99"})
+      << report(r);
+}
+
+TEST(ColourBy, TheScreenshotIsColouredByTheProperty) {
+  std::string d = fresh_dir("colour_by");
+  ASSERT_EQ(batch({"--quiet", "--screenshot", d + "plain.png", inspect_model}).status, 0);
+  test_run::result r = batch({"--quiet", "--color-by", "height", "--screenshot", d + "height.png", inspect_model});
+  ASSERT_EQ(r.status, 0) << report(r);
+  image plain = load_png(d + "plain.png"), coloured = load_png(d + "height.png");
+  ASSERT_EQ(plain.width, coloured.width);
+  ASSERT_EQ(plain.height, coloured.height);
+  // A face above the front edge (the model) changes colour; the colour
+  // bar at the right edge runs from dark violet (bottom) to yellow (top).
+  auto at = [](const image& im, int x, int y) { return im.at(x, y); };
+  int cx = plain.width / 2, cy = plain.height / 2 - plain.height / 8;
+  EXPECT_FALSE(near_colour(at(plain, cx, cy), at(coloured, cx, cy))) << "the model is not coloured";
+  const unsigned char* top = at(coloured, coloured.width - 30, coloured.height * 3 / 10);
+  const unsigned char* bottom = at(coloured, coloured.width - 30, coloured.height * 7 / 10);
+  EXPECT_GT(top[0] + top[1], 300) << "the top of the colour bar is not light (yellow)";
+  EXPECT_LT(bottom[0] + bottom[1], 200) << "the bottom of the colour bar is not dark";
+  EXPECT_GT(top[1], top[2]) << "the top of the colour bar is not yellow";
+}
+
+TEST(ColourBy, AMissingPropertyNamesTheNumericOnes) {
+  std::string d = fresh_dir("colour_by_missing");
+  test_run::result r = batch({"--quiet", "--color-by", "pos", "--screenshot", d + "x.png", inspect_model});
+  EXPECT_EQ(r.status, 1) << report(r);
+  EXPECT_EQ(viewer_errors(r.err),
+            std::vector<std::string>{"vvinterpreter: " + inspect_model +
+                                     ": --color-by pos: the vertices have no numeric property pos (they have "
+                                     "height, visits)"})
+      << report(r);
+  EXPECT_FALSE(fs::exists(d + "x.png"));
+}
+
+TEST(Help, ListsEveryScriptCommand) {
+  test_run::result r = test_run::run(test_run::interpreter({"--help"}), 30);
+  ASSERT_EQ(r.status, 0) << report(r);
+  for (const char* command : {"step", "run", "rewind", "end", "reread", "recompile", "fit", "screenshot",
+                              "window-screenshot", "export", "rotate", "zoom", "wait", "stop", "pick", "set",
+                              "save-params", "color-by", "show", "plots", "quit"})
+    EXPECT_TRUE(has(r.out, std::string("\n  ") + command + " ")) << command << " is not listed\n" << r.out;
+}
+
+// The viewer: `pick` prints what the panel shows; `set` changes what the
+// next step computes; `save-params` writes the values into the .vvp.
+TEST(ViewerInteraction, PickSetAndSaveParameters) {
+  std::string d = fresh_dir("viewer_params");
+  const std::string model = d + "parameters.vvp";
+  std::string source = slurp(VV_TESTS_DIR "/models/parameters.vvp");
+  write_text(model, source);
+  write_text(d + "script.txt",
+             script({"set rate=0.25", "set grow=false", "rewind", "recompile", "save-params", "quit"}));
+  test_run::result r = viewer({"--script", d + "script.txt", model});
+  ASSERT_FALSE(r.timed_out) << report(r);
+  EXPECT_EQ(r.status, 0) << report(r);
+  EXPECT_TRUE(viewer_errors(r.err).empty()) << report(r);
+  // Start printed the file's values, and after the rewind the set ones.
+  EXPECT_TRUE(has(r.out, "rate 0.5 cells 3 grow 1 seeds 7 scale 0.1\n")) << report(r);
+  // After the rewind and after the reload Recompile makes: the values set
+  // are kept (names and types unchanged).
+  const std::string set = "rate 0.25 cells 3 grow 0 seeds 7 scale 0.1\n";
+  std::size_t first = r.out.find(set);
+  ASSERT_NE(first, std::string::npos) << report(r);
+  EXPECT_NE(r.out.find(set, first + 1), std::string::npos) << "a reload lost the values set\n" << report(r);
+  std::string saved = edited(edited(source, "param double rate = 0.5 in [0, 1];", "param double rate = 0.25 in [0, 1];"),
+                             "param bool grow = true;", "param bool grow = false;");
+  EXPECT_EQ(slurp(model), saved);
+}
+
+TEST(ViewerInteraction, PickColourByDisplayAndPlots) {
+  std::string d = fresh_dir("viewer_pick");
+  const std::string shaded = d + "flat.png", coloured = d + "coloured.png";
+  write_text(d + "script.txt", script({"step", "pick 5", "show flat on", "show points on", "screenshot " + shaded,
+                                       "color-by height", "screenshot " + coloured, "plots " + d + "plots.csv",
+                                       "quit"}));
+  test_run::result r = viewer({"--script", d + "script.txt", inspect_model});
+  ASSERT_FALSE(r.timed_out) << report(r);
+  EXPECT_EQ(r.status, 0) << report(r);
+  EXPECT_TRUE(viewer_errors(r.err).empty()) << report(r);
+  EXPECT_TRUE(has(r.out, apex_after_one_step)) << report(r);
+  expect_scene_shot(shaded);
+  ASSERT_TRUE(fs::exists(coloured)) << report(r);
+  EXPECT_FALSE(slurp(shaded) == slurp(coloured)) << "color-by height did not change the picture";
+  // Step 1 is odd: "even" has no value yet.
+  EXPECT_EQ(slurp(d + "plots.csv"), "step,vertices,\"growth, %\"\n0,6,\n1,6,100\n");
+}
+
+// A function file: control points on the line y = slope x.
+std::string function_on(double slope) {
+  std::string points;
+  for (double x : {0.0, 1.0 / 3, 2.0 / 3, 1.0}) points += std::to_string(x) + " " + std::to_string(slope * x) + "\n";
+  return "fver 1 1\nname: growth\nsamples: 100\nflip: off\npoints: 4\n" + points;
+}
+
+// Saving a file a file object reads rereads it at once, keeping the step;
+// a broken save names its line and the model keeps the last good values.
+TEST(ViewerInteraction, SavingAFunctionFileRereadsIt) {
+  std::string d = fresh_dir("viewer_reread");
+  fs::copy_file(VV_TESTS_DIR "/models/function_file.vvp", d + "model.vvp");
+  write_text(d + "growth.func", function_on(1));
+  write_text(d + "script.txt", script({"step", "wait 3000", "step", "wait 3000", "step", "quit"}));
+  live_viewer v({"--script", d + "script.txt", d + "model.vvp"});
+  ASSERT_TRUE(v.wait_for_out("step f(0.5) = 0.5\n", viewer_timeout)) << v.out << v.err;
+  replace_file(d + "growth.func", function_on(2));
+  ASSERT_TRUE(v.wait_for_out("step f(0.5) = 1\n", 10)) << v.out << v.err;
+  replace_file(d + "growth.func", "fver 1 1\nname: growth\nsamples: 100\nflip: off\npoints: 4\n0 0\n1 x\n");
+  test_run::result r = v.finish();
+  EXPECT_EQ(r.status, 0) << report(r);
+  // Three steps: the file's values, the edited ones, and again the edited
+  // ones after the broken save; the start block ran once (no rewind).
+  EXPECT_EQ(r.out.find("start f(0.5) = 0.5\n"), r.out.rfind("start f(0.5)")) << report(r);
+  EXPECT_TRUE(has(r.out, "step f(0.5) = 0.5\nreread " + d + "growth.func\nstep f(0.5) = 1\n")) << report(r);
+  std::size_t second = r.out.find("step f(0.5) = 1\n");
+  ASSERT_NE(second, std::string::npos) << report(r);
+  EXPECT_NE(r.out.find("step f(0.5) = 1\n", second + 1), std::string::npos) << "the broken save changed f\n"
+                                                                              << report(r);
+  EXPECT_TRUE(error_names(r.err, d + "growth.func:7")) << report(r);
+}
+
+}  // namespace

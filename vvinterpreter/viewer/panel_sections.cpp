@@ -1,0 +1,116 @@
+// The panel's sections for looking into a model: its parameters, its plots,
+// how it is drawn, and the picked vertex.
+#include <imgui.h>
+
+#include <cfloat>
+#include <cstdio>
+#include <cstdlib>
+
+#include "viewer/panel.hpp"
+
+namespace vvi {
+
+namespace {
+
+std::string number_text(double v) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.17g", v);
+  for (int digits = 1; digits <= 17; ++digits) {
+    char shorter[32];
+    std::snprintf(shorter, sizeof shorter, "%.*g", digits, v);
+    if (std::strtod(shorter, nullptr) == v) return shorter;
+  }
+  return buf;
+}
+
+// One parameter's control: a checkbox, a slider over its range, or a field.
+void parameter_control(const parameter_view& p, panel_actions& a) {
+  ImGui::PushID(p.name.c_str());
+  if (p.type == "bool") {
+    bool on = p.number != 0;
+    if (ImGui::Checkbox(p.name.c_str(), &on)) a.set_parameters.emplace_back(p.name, on ? "true" : "false");
+  } else if (p.type == "int" || p.type == "unsigned") {
+    int v = static_cast<int>(p.number);
+    bool changed = p.has_range ? ImGui::SliderInt(p.name.c_str(), &v, int(p.lo), int(p.hi))
+                               : ImGui::InputInt(p.name.c_str(), &v);
+    if (changed) a.set_parameters.emplace_back(p.name, std::to_string(v));
+  } else {
+    double v = p.number;
+    bool changed = p.has_range ? ImGui::SliderScalar(p.name.c_str(), ImGuiDataType_Double, &v, &p.lo, &p.hi, "%.6g")
+                               : ImGui::InputDouble(p.name.c_str(), &v, 0, 0, "%.6g",
+                                                    ImGuiInputTextFlags_EnterReturnsTrue);
+    if (changed) a.set_parameters.emplace_back(p.name, number_text(p.type == "float" ? double(float(v)) : v));
+  }
+  if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s %s, line %d", p.type.c_str(), p.name.c_str(), p.line);
+  ImGui::PopID();
+}
+
+}  // namespace
+
+void draw_parameters(const panel_state& s, panel_actions& a) {
+  if (s.parameters.empty() || !ImGui::CollapsingHeader("Parameters", ImGuiTreeNodeFlags_DefaultOpen)) return;
+  bool disabled = !s.has_model || s.busy;
+  if (disabled) ImGui::BeginDisabled();
+  for (const parameter_view& p : s.parameters) parameter_control(p, a);
+  bool rewind = s.rewind_on_change;
+  if (ImGui::Checkbox("Rewind on change (run again to this step)", &rewind)) a.toggle_rewind_on_change = true;
+  a.save_parameters = ImGui::Button("Save to file");
+  if (ImGui::IsItemHovered()) ImGui::SetTooltip("write these values into the parameters' lines of the .vvp");
+  if (disabled) ImGui::EndDisabled();
+}
+
+void draw_plots(const panel_state& s) {
+  if (s.plots.empty() || !ImGui::CollapsingHeader("Plots", ImGuiTreeNodeFlags_DefaultOpen)) return;
+  for (const plot_view& p : s.plots) {
+    char overlay[96];
+    std::snprintf(overlay, sizeof overlay, "%s = %.6g (step %u)", p.name.c_str(), p.last, p.last_step);
+    ImGui::PlotLines(("##" + p.name).c_str(), p.values.data(), int(p.values.size()), 0, overlay, FLT_MAX, FLT_MAX,
+                     ImVec2(300, 70));
+    ImGui::TextDisabled("steps %u to %u", p.first_step, p.last_step);
+  }
+}
+
+void draw_display(const panel_state& s, panel_actions& a) {
+  if (!ImGui::CollapsingHeader("Display")) return;
+  display_style style = s.style;
+  bool changed = ImGui::Checkbox("faces", &style.faces);
+  ImGui::SameLine();
+  changed |= ImGui::Checkbox("edges", &style.edges);
+  ImGui::SameLine();
+  changed |= ImGui::Checkbox("points", &style.points);
+  changed |= ImGui::Checkbox("flat shading", &style.flat);
+  ImGui::SameLine();
+  changed |= ImGui::Checkbox("back faces", &style.back_faces);
+  changed |= ImGui::Checkbox("hide edges when they fill the picture", &style.auto_hide_edges);
+  if (changed) a.style_changed = true, a.style = style;
+  bool fit = s.auto_fit;
+  if (ImGui::Checkbox("fit the view while the model grows", &fit)) a.toggle_auto_fit = true;
+  const char* shown = s.color_by.empty() ? "(plain)" : s.color_by.c_str();
+  if (ImGui::BeginCombo("colour by", shown)) {
+    if (ImGui::Selectable("(plain)", s.color_by.empty())) a.color_by_changed = true, a.color_by.clear();
+    for (const std::string& f : s.numeric_fields)
+      if (ImGui::Selectable(f.c_str(), f == s.color_by)) a.color_by_changed = true, a.color_by = f;
+    ImGui::EndCombo();
+  }
+  if (s.has_values) ImGui::Text("%s: %.6g (dark) to %.6g (light)", s.color_by.c_str(), s.value_min, s.value_max);
+  const mesh_counts& c = s.counts;
+  ImGui::Text("V %zu  E %zu  F %zu", c.vertices, c.edges, c.faces);
+  if (c.boundary_edges || c.non_manifold_edges)
+    ImGui::Text("boundary edges %zu  non-manifold edges %zu", c.boundary_edges, c.non_manifold_edges);
+  if (!s.file_objects.empty()) {
+    ImGui::TextDisabled("files reread when saved:");
+    for (const std::string& f : s.file_objects) ImGui::TextDisabled("  %s", f.c_str());
+  }
+}
+
+void draw_inspector(const panel_state& s, panel_actions& a) {
+  if (!ImGui::CollapsingHeader("Inspect", ImGuiTreeNodeFlags_DefaultOpen)) return;
+  if (s.picked.empty()) {
+    ImGui::TextDisabled("ctrl+click a vertex to see its properties and neighbourhood");
+    return;
+  }
+  ImGui::TextUnformatted(s.picked.c_str());
+  a.clear_pick = ImGui::Button("Clear");
+}
+
+}  // namespace vvi
