@@ -1,0 +1,149 @@
+// The cell division models run as users run them (vvinterpreter --batch):
+// the cells per generation (the plots' CSV and the end block's line), the
+// tissue they leave (read back with vvlib: symmetric neighbourhoods,
+// V - E + F of a disc, every cell a convex hexagon of positive area with
+// opposite walls marked alike) and identical exports from two runs.
+#include <vv/vv.hpp>
+
+#include <algorithms/cell_geometry.hpp>
+#include <util/point.hpp>
+
+#include <gtest/gtest.h>
+
+#include <cstdint>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "run_interpreter.hpp"
+#include "test_files.hpp"
+
+namespace {
+
+using Pt = util::Point<double>;
+
+test_run::result batch(const std::string& model, std::vector<std::string> args) {
+  std::vector<std::string> all = {"--batch", "--quiet"};
+  all.insert(all.end(), args.begin(), args.end());
+  all.push_back(VV_SOURCE_DIR "/examples/" + model);
+  return test_run::run(test_run::interpreter(all), 300);
+}
+
+std::string report(const test_run::result& r) { return "stdout:\n" + r.out + "stderr:\n" + r.err; }
+
+// One column of a --plots CSV file, by its header.
+std::vector<std::string> csv_column(const std::string& path, const std::string& name) {
+  std::istringstream in(test_files::slurp(path));
+  std::string line;
+  std::getline(in, line);
+  std::vector<std::string> header;
+  std::istringstream hs(line);
+  for (std::string cell; std::getline(hs, cell, ',');) header.push_back(cell);
+  std::size_t column = header.size();
+  for (std::size_t i = 0; i < header.size(); ++i)
+    if (header[i] == name) column = i;
+  std::vector<std::string> values;
+  while (std::getline(in, line)) {
+    std::istringstream ls(line);
+    std::string cell;
+    for (std::size_t i = 0; i <= column && std::getline(ls, cell, ','); ++i) {
+    }
+    values.push_back(cell);
+  }
+  return values;
+}
+
+struct vertex_props {
+  Pt pos, vel;
+  template <class F>
+  void vv_fields(F&& f) {
+    f("pos", pos);
+    f("vel", vel);
+  }
+};
+struct edge_props {
+  int mark;
+  template <class F>
+  void vv_fields(F&& f) {
+    f("mark", mark);
+  }
+};
+using graph = vv::graph<vertex_props, edge_props>;
+
+// A tissue exported by a model: its cells are the face orbits of at most
+// 6 corners (the outline is longer).
+struct tissue {
+  graph::context ctx;
+  graph::mesh S{ctx};
+  std::vector<graph::vertex> at;  // by position in the mesh
+  std::vector<std::vector<std::uint32_t>> cells;
+
+  explicit tissue(const std::string& path) {
+    S.readXMLFile(path);
+    for (graph::vertex v : vv::each(S)) at.push_back(v);
+    cells = vv::face_orbits(S, 6);
+  }
+  std::vector<Pt> corners(const std::vector<std::uint32_t>& cell) const {
+    std::vector<Pt> points;
+    for (std::uint32_t i : cell) points.push_back(at[i]->pos);
+    return points;
+  }
+};
+
+// Checks what every exported tissue must satisfy; `cells` is exact.
+void expect_hexagonal_tissue(const tissue& t, std::size_t cells) {
+  EXPECT_NO_THROW(vv::check_invariants(t.S, {true, false}));  // symmetric
+  ASSERT_EQ(t.cells.size(), cells);
+  // A disc: V - E + cells = 1 (the outline is no face).
+  EXPECT_EQ(long(t.S.size()) - long(vv::edge_count(t.S)) + long(cells), 1);
+  for (const auto& cell : t.cells) {
+    ASSERT_EQ(cell.size(), 6u);
+    const std::vector<Pt> points = t.corners(cell);
+    EXPECT_GT(algorithms::polygon_area(points), 0.1);
+    EXPECT_TRUE(algorithms::polygon_is_convex(points));
+    // Opposite walls carry the same mark, the three marks 1, 2, 3.
+    int marks[6];
+    for (int i = 0; i < 6; ++i) marks[i] = vv::edge(t.at[cell[i]], t.at[cell[(i + 1) % 6]]).mark;
+    for (int i = 0; i < 3; ++i) EXPECT_EQ(marks[i], marks[i + 3]);
+    EXPECT_EQ(marks[0] + marks[1] + marks[2], 6);
+    EXPECT_EQ(marks[0] * marks[1] * marks[2], 6);
+  }
+}
+
+const std::vector<std::string> doubling = {"1", "2", "4", "8", "16", "32", "64"};
+
+}  // namespace
+
+TEST(KornSpalding, CellsDoubleEveryGeneration) {
+  const std::string plots = test_files::scratch_dir() + "korn_spalding.csv";
+  test_run::result r = batch("korn_spalding.vvp", {"--steps", "6", "--end", "--plots", plots});
+  ASSERT_EQ(r.status, 0) << report(r);
+  EXPECT_EQ(csv_column(plots, "cells"), doubling);
+  EXPECT_EQ(r.out.rfind("generation 6: 64 cells, mean area ", 0), 0u) << r.out;
+  // Cells keep their size: walls of one rest length, slightly stretched.
+  for (const std::string& area : csv_column(plots, "mean cell area")) {
+    EXPECT_GT(std::stod(area), 2.5);
+    EXPECT_LT(std::stod(area), 3.2);
+  }
+}
+
+TEST(KornSpalding, EveryCellIsAConvexHexagonWithOppositeWallsMarkedAlike) {
+  const std::string dir = test_files::scratch_dir();
+  for (int steps : {1, 2, 5}) {
+    const std::string out = dir + "korn_spalding_" + std::to_string(steps) + ".vvm";
+    test_run::result r = batch("korn_spalding.vvp", {"--steps", std::to_string(steps), "--export", out});
+    ASSERT_EQ(r.status, 0) << report(r);
+    SCOPED_TRACE(steps);
+    expect_hexagonal_tissue(tissue(out), std::size_t(1) << steps);
+  }
+}
+
+TEST(KornSpalding, TwoRunsExportTheSameBytes) {
+  const std::string dir = test_files::scratch_dir();
+  test_run::result a = batch("korn_spalding.vvp", {"--steps", "4", "--export", dir + "ks_a.vvm"});
+  test_run::result b = batch("korn_spalding.vvp", {"--steps", "4", "--export", dir + "ks_b.vvm"});
+  ASSERT_EQ(a.status, 0) << report(a);
+  ASSERT_EQ(b.status, 0) << report(b);
+  EXPECT_EQ(test_files::slurp(dir + "ks_a.vvm"), test_files::slurp(dir + "ks_b.vvm"));
+  EXPECT_FALSE(test_files::slurp(dir + "ks_a.vvm").empty());
+}
