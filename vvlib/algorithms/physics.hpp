@@ -16,6 +16,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <type_traits>
 #include <utility>
 
@@ -31,10 +32,16 @@ template <class V>
 using point_of = std::decay_t<decltype(std::declval<typename V::traits_type::vertex_props&>().pos)>;
 
 //! Rest length from the old half-edge record v->n: its field `rest`.
+//! (MassSpring hands it the record directly; the form with two vertices
+//! finds it.)
 struct RestFromRecords {
   template <class V>
   double operator()(const V& v, const V& n) const {
     return vv::edge(vv::old(v), n).rest;
+  }
+  template <class Record>
+  double from_record(const Record& r) const {
+    return r.rest;
   }
 };
 
@@ -43,6 +50,10 @@ struct UniformRest {
   double length;
   template <class V>
   double operator()(const V&, const V&) const {
+    return length;
+  }
+  template <class Record>
+  double from_record(const Record&) const {
     return length;
   }
 };
@@ -56,6 +67,38 @@ struct NoForce {
 };
 
 namespace detail {
+// A rest-length callable that reads the old record itself (from_record)
+// spares the search for n in v's old neighbourhood.
+template <class Rest, class Record, class = void>
+struct reads_records : std::false_type {};
+template <class Rest, class Record>
+struct reads_records<Rest, Record,
+                     std::void_t<decltype(std::declval<const Rest&>().from_record(std::declval<const Record&>()))>>
+    : std::true_type {};
+
+// The old neighbourhood of a vertex read in place: neighbour slots, their
+// old positions and the old records, without handles or a snapshot. For
+// the inner loops of a step, which change nothing while they read.
+template <class Tr>
+class old_fan {
+ public:
+  using context_type = vv::context<Tr>;
+  using entry_traits = typename context_type::entry_traits;
+  explicit old_fan(const vv::vertex<Tr>& v) : ctx_(v.ctx()), nb_(&ctx_->old_nb(v.slot())) {}
+  explicit old_fan(const vv::old_vertex<Tr>& v) : ctx_(v.ctx()), nb_(&ctx_->old_nb(v.slot())) {}
+  std::uint32_t size() const noexcept { return nb_->size(); }
+  std::uint32_t slot(std::uint32_t i) const noexcept { return entry_traits::id((*nb_)[i]); }
+  const auto& pos(std::uint32_t i) const noexcept { return ctx_->old_props(slot(i)).pos; }
+  const auto& record(std::uint32_t i) const noexcept {
+    return entry_traits::rec((*nb_)[i], ctx_->empty_record());
+  }
+  vv::vertex<Tr> neighbour(std::uint32_t i) const noexcept { return vv::vertex<Tr>::from_slot(ctx_, slot(i)); }
+
+ private:
+  context_type* ctx_;
+  const typename context_type::nb_type* nb_;
+};
+
 // The position of neighbour n in the state v is viewed in.
 template <class Tr>
 const auto& position_in(const vv::vertex<Tr>&, const vv::vertex<Tr>& n) {
@@ -78,11 +121,16 @@ auto fan_cross_sum(const VL& v) {
   const P centre = v->pos;
   P sum, first_arm, previous_arm;
   bool first = true;
-  for (auto n : vv::each(v)) {
-    const P arm = detail::position_in(v, n) - centre;
+  auto add_arm = [&](const P& arm) {
     if (first) first_arm = arm, first = false;
     else sum += previous_arm.cross(arm);
     previous_arm = arm;
+  };
+  if constexpr (std::is_same_v<VL, vv::old_vertex<typename VL::traits_type>>) {
+    const detail::old_fan<typename VL::traits_type> fan(v);
+    for (std::uint32_t i = 0; i < fan.size(); ++i) add_arm(fan.pos(i) - centre);
+  } else {
+    for (auto n : vv::each(v)) add_arm(detail::position_in(v, n) - centre);
   }
   if (!first) sum += previous_arm.cross(first_arm);
   return sum;
@@ -151,12 +199,19 @@ class MassSpring {
   //! The springs' force on v, in the old state.
   template <class Rest>
   point spring_force(const V& v, Rest rest) const {
+    using Tr = typename V::traits_type;
+    using record = typename Tr::edge_props;
     const point centre = vv::old(v)->pos;
     point force;
-    for (V n : vv::each(vv::old(v))) {
-      const point d = vv::old(n)->pos - centre;
+    const detail::old_fan<Tr> fan(v);
+    for (std::uint32_t i = 0; i < fan.size(); ++i) {
+      const point d = fan.pos(i) - centre;
       const double length = d.length();
-      if (length > 0) force += (stiffness * (length - rest(v, n)) / length) * d;
+      if (!(length > 0)) continue;
+      double r;
+      if constexpr (detail::reads_records<Rest, record>::value) r = rest.from_record(fan.record(i));
+      else r = rest(v, fan.neighbour(i));
+      force += (stiffness * (length - r) / length) * d;
     }
     return force;
   }
