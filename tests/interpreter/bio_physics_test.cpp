@@ -1,8 +1,10 @@
-// The cell division models run as users run them (vvinterpreter --batch):
-// the cells per generation (the plots' CSV and the end block's line), the
-// tissue they leave (read back with vvlib: symmetric neighbourhoods,
-// V - E + F of a disc, every cell a convex hexagon of positive area with
-// opposite walls marked alike) and identical exports from two runs.
+// The cell division models (korn_spalding.vvp, cell_system.vvp) run as
+// users run them (vvinterpreter --batch): the cells per generation (the
+// plots' CSV and the end block's line), the tissue they leave (read back
+// with vvlib: symmetric neighbourhoods, V - E + F of a disc, convex cells
+// of positive area; Korn-Spalding's are hexagons with opposite walls
+// marked alike, the cell system's carry their turned reference vector)
+// and identical exports from two runs.
 #include <vv/vv.hpp>
 
 #include <algorithms/cell_geometry.hpp>
@@ -61,11 +63,17 @@ struct vertex_props {
     f("vel", vel);
   }
 };
+// The fields of both models' edge blocks (a file's other fields are
+// ignored).
 struct edge_props {
-  int mark;
+  int mark, cell, born;
+  double angle;
   template <class F>
   void vv_fields(F&& f) {
     f("mark", mark);
+    f("cell", cell);
+    f("born", born);
+    f("angle", angle);
   }
 };
 using graph = vv::graph<vertex_props, edge_props>;
@@ -78,10 +86,10 @@ struct tissue {
   std::vector<graph::vertex> at;  // by position in the mesh
   std::vector<std::vector<std::uint32_t>> cells;
 
-  explicit tissue(const std::string& path) {
+  explicit tissue(const std::string& path, std::size_t max_face = 6) {
     S.readXMLFile(path);
     for (graph::vertex v : vv::each(S)) at.push_back(v);
-    cells = vv::face_orbits(S, 6);
+    cells = vv::face_orbits(S, max_face);
   }
   std::vector<Pt> corners(const std::vector<std::uint32_t>& cell) const {
     std::vector<Pt> points;
@@ -146,4 +154,64 @@ TEST(KornSpalding, TwoRunsExportTheSameBytes) {
   ASSERT_EQ(b.status, 0) << report(b);
   EXPECT_EQ(test_files::slurp(dir + "ks_a.vvm"), test_files::slurp(dir + "ks_b.vvm"));
   EXPECT_FALSE(test_files::slurp(dir + "ks_a.vvm").empty());
+}
+
+// ---- examples/cell_system.vvp ----
+
+// The cells of a cell system's tissue: the orbits inside a cell (the
+// outline's half-edges have cell = 0).
+std::vector<std::vector<std::uint32_t>> inner_cells(const tissue& t) {
+  std::vector<std::vector<std::uint32_t>> inside;
+  for (const auto& cell : t.cells)
+    if (vv::edge(t.at[cell[0]], t.at[cell[1]]).cell == 1) inside.push_back(cell);
+  return inside;
+}
+
+TEST(CellSystem, CellsDoubleAtEverySettleEvent) {
+  const std::string plots = test_files::scratch_dir() + "cell_system.csv";
+  test_run::result r = batch("cell_system.vvp", {"--steps", "6", "--end", "--plots", plots});
+  ASSERT_EQ(r.status, 0) << report(r);
+  EXPECT_EQ(csv_column(plots, "cells"), doubling);
+  EXPECT_EQ(r.out.rfind("generation 6: 64 cells, mean area ", 0), 0u) << r.out;
+}
+
+TEST(CellSystem, EveryCellIsConvexAndTurnedByTheSameAngle) {
+  const std::string dir = test_files::scratch_dir();
+  for (int steps : {1, 3, 5}) {
+    const std::string out = dir + "cell_system_" + std::to_string(steps) + ".vvm";
+    test_run::result r = batch("cell_system.vvp", {"--steps", std::to_string(steps), "--export", out});
+    ASSERT_EQ(r.status, 0) << report(r);
+    SCOPED_TRACE(steps);
+    const tissue t(out, 1000);
+    EXPECT_NO_THROW(vv::check_invariants(t.S, {true, false}));
+    const auto cells = inner_cells(t);
+    ASSERT_EQ(cells.size(), std::size_t(1) << steps);
+    ASSERT_EQ(t.cells.size(), cells.size() + 1);  // and the outline
+    // Every division adds 2 wall vertices and 3 walls: a disc.
+    const long divisions = (1L << steps) - 1;
+    EXPECT_EQ(long(t.S.size()), 6 + 2 * divisions);
+    EXPECT_EQ(long(vv::edge_count(t.S)), 6 + 3 * divisions);
+    for (const auto& cell : cells) {
+      const std::vector<Pt> points = t.corners(cell);
+      EXPECT_GT(algorithms::polygon_area(points), 0.1);
+      EXPECT_TRUE(algorithms::polygon_is_convex(points));
+      // The first reference vector (10 degrees) turned 90 degrees per
+      // division, recorded in every half-edge inside the cell.
+      for (std::size_t i = 0; i < cell.size(); ++i) {
+        const edge_props& e = vv::edge(t.at[cell[i]], t.at[cell[(i + 1) % cell.size()]]);
+        EXPECT_EQ(e.angle, 10 + 90 * steps);
+        EXPECT_EQ(e.born, steps);
+      }
+    }
+  }
+}
+
+TEST(CellSystem, TwoRunsExportTheSameBytes) {
+  const std::string dir = test_files::scratch_dir();
+  test_run::result a = batch("cell_system.vvp", {"--steps", "4", "--export", dir + "cs_a.vvm"});
+  test_run::result b = batch("cell_system.vvp", {"--steps", "4", "--export", dir + "cs_b.vvm"});
+  ASSERT_EQ(a.status, 0) << report(a);
+  ASSERT_EQ(b.status, 0) << report(b);
+  EXPECT_EQ(test_files::slurp(dir + "cs_a.vvm"), test_files::slurp(dir + "cs_b.vvm"));
+  EXPECT_FALSE(test_files::slurp(dir + "cs_a.vvm").empty());
 }
