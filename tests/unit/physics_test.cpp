@@ -67,6 +67,16 @@ TEST_F(two_masses, OneSpringPullsBothEndsTogether) {
   expect_point(springs.acceleration(a, algorithms::UniformRest{0.5}), 2.25, 0, 0);  // 3 * 1.5 / 2
 }
 
+TEST_F(two_masses, RestLengthsFromAnyCallable) {
+  vv::synchronise(S);
+  // Given both ends, without the record: rest 0.25 from a, 1.5 from b.
+  auto rest = [&](const vertex& v, const vertex&) { return v == a ? 0.25 : 1.5; };
+  expect_point(springs.acceleration(a, rest), 1.75, 0, 0);
+  expect_point(springs.acceleration(b, rest), -0.5, 0, 0);
+  // RestFromRecords also answers for two vertices.
+  EXPECT_EQ(algorithms::RestFromRecords()(a, b), 1);
+}
+
 TEST_F(two_masses, DragOpposesTheOldVelocity) {
   a->vel = Pt(0.5, 0, 0);
   springs.drag = 0.2;
