@@ -98,16 +98,6 @@ class old_fan {
   context_type* ctx_;
   const typename context_type::nb_type* nb_;
 };
-
-// The position of neighbour n in the state v is viewed in.
-template <class Tr>
-const auto& position_in(const vv::vertex<Tr>&, const vv::vertex<Tr>& n) {
-  return n->pos;
-}
-template <class Tr>
-const auto& position_in(const vv::old_vertex<Tr>&, const vv::vertex<Tr>& n) {
-  return vv::old(n)->pos;
-}
 }  // namespace detail
 
 //! Σ (n_i - v) x (n_i+1 - v) over consecutive neighbours of v, the fan
@@ -130,7 +120,7 @@ auto fan_cross_sum(const VL& v) {
     const detail::old_fan<typename VL::traits_type> fan(v);
     for (std::uint32_t i = 0; i < fan.size(); ++i) add_arm(fan.pos(i) - centre);
   } else {
-    for (auto n : vv::each(v)) add_arm(detail::position_in(v, n) - centre);
+    for (auto n : vv::each(v)) add_arm(n->pos - centre);
   }
   if (!first) sum += previous_arm.cross(first_arm);
   return sum;
