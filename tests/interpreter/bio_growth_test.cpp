@@ -209,7 +209,12 @@ TEST(SeaShell, LaysARingEveryStepAndRefinesTheMargin) {
   std::string out;
   test_run::result r = run_and_export("sea_shell", "90", "shell", out);
   ASSERT_EQ(r.status, 0) << report(r);
-  EXPECT_EQ(r.out, "rings: 90, margin cells: 64, cells: 2017\nwhorls: 3.000, aperture width: 9.228856\n");
+  // Every cell laid behind the margin (all but the apex and the margin's
+  // 64) reaches the margin through its flags, from the first ring in 90.
+  EXPECT_EQ(r.out,
+            "rings: 90, margin cells: 64, cells: 2017\n"
+            "flag paths to the margin: 1952, longest 90\n"
+            "whorls: 3.000, aperture width: 9.228856\n");
   shell_graph::context ctx;
   shell_graph::mesh S(ctx);
   S.readXMLFile(out);
@@ -225,7 +230,10 @@ TEST(SeaShell, WithoutRefinementEveryRingHasTheFirstMarginsCells) {
   test_run::result r = batch("sea_shell", {"--steps", "60", "--end", "--set", "chaikin_every=1000"});
   ASSERT_EQ(r.status, 0) << report(r);
   // The apex, 60 rings of 8 and the margin's 8.
-  EXPECT_EQ(r.out.substr(0, r.out.find('\n') + 1), "rings: 60, margin cells: 8, cells: 489\n");
+  EXPECT_EQ(r.out,
+            "rings: 60, margin cells: 8, cells: 489\n"
+            "flag paths to the margin: 480, longest 60\n"
+            "whorls: 2.000, aperture width: 4.399790\n");
 }
 
 TEST(SeaShell, ASecondRunExportsTheSameBytes) {
