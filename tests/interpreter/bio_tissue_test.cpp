@@ -1,17 +1,20 @@
-// The tissue model root_meristem.vvp run as users run it (vvinterpreter
-// --batch --end): the summary its end block prints (exact counts, the
-// apex's valence, a tip that bends towards gravity and stays straight
-// without gravitropism), its export read back with vvlib (symmetric
-// neighbourhoods, V - E + F of a disc, no degenerate triangle), its plots
-// and a second run's export compared byte for byte with the first.
+// The tissue models root_meristem.vvp and daffodil_corona.vvp run as
+// users run them (vvinterpreter --batch --end): the summaries their end
+// blocks print (exact counts; the root's apex valence and a tip that bends
+// towards gravity and stays straight without gravitropism; the corona's
+// rim much longer than its circumference), their exports read back with
+// vvlib (symmetric neighbourhoods, V - E + F, no degenerate triangle),
+// plots, and a second run's export compared byte for byte with the first.
 #include <vv/vv.hpp>
 
 #include <util/point.hpp>
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <cstdio>
 #include <sstream>
+#include <utility>
 #include <string>
 #include <vector>
 
@@ -167,4 +170,106 @@ TEST(RootMeristem, PlotsTheBendingAngleEveryStep) {
   int rows = 0;
   for (std::string line; std::getline(in, line);) ++rows;
   EXPECT_EQ(rows, 5);  // the start and 4 steps
+}
+
+// ---- examples/daffodil_corona.vvp ----
+
+namespace {
+
+struct corona_summary {
+  unsigned steps = 0;
+  std::size_t vertices = 0, rim = 0;
+  double length = 0, circumference = 0, ratio = 0, amplitude = 0;
+  bool parsed = false;
+};
+
+corona_summary run_corona(const std::string& steps, const std::string& exported = "") {
+  std::vector<std::string> args = {"--steps", steps, "--end"};
+  if (!exported.empty()) args.insert(args.end(), {"--export", exported});
+  test_run::result r = batch("daffodil_corona", args);
+  EXPECT_EQ(r.status, 0) << report(r);
+  corona_summary s;
+  const std::size_t line = r.out.find("rim length");
+  s.parsed = std::sscanf(r.out.c_str(), "growth steps %u: %zu vertices, %zu rim vertices", &s.steps, &s.vertices,
+                         &s.rim) == 3 &&
+             line != std::string::npos &&
+             std::sscanf(r.out.c_str() + line, "rim length %lf, circumference %lf, ratio %lf, wave amplitude %lf",
+                         &s.length, &s.circumference, &s.ratio, &s.amplitude) == 4;
+  EXPECT_TRUE(s.parsed) << r.out;
+  return s;
+}
+
+struct corona_vertex {
+  Pt pos;
+  bool rim = false, anchored = false;
+  template <class F>
+  void vv_fields(F&& f) {
+    f("pos", pos), f("rim", rim), f("anchored", anchored);
+  }
+};
+using corona_graph = vv::graph<corona_vertex, edge_props>;
+
+}  // namespace
+
+TEST(DaffodilCorona, TheRimDividesAsItGrows) {
+  // 12 rim vertices; every rim edge passes split_length at once: rest
+  // 1.035 grows by 1.15 a step, past 1.4 in step 3; halved, past it again
+  // in step 8.
+  for (auto [steps, rim] : {std::pair<int, std::size_t>{0, 12}, {2, 12}, {3, 24}, {7, 24}, {8, 48}}) {
+    SCOPED_TRACE(steps);
+    const corona_summary s = run_corona(std::to_string(steps));
+    EXPECT_EQ(s.steps, unsigned(steps));
+    EXPECT_EQ(s.rim, rim);
+    EXPECT_EQ(s.vertices, 48 + rim);  // 4 rings of 12 below the rim
+  }
+}
+
+TEST(DaffodilCorona, TheRimBucklesIntoWaves) {
+  const corona_summary start = run_corona("0");
+  // A regular 12-gon (and a faint ripple): 12 sin(15 degrees) / pi.
+  EXPECT_NEAR(start.ratio, 12 * std::sin(3.14159265358979 / 12) / 3.14159265358979, 0.002);
+  const corona_summary grown = run_corona("12");
+  // Much longer than the circle of its mean radius: folded into waves
+  // that rise and fall out of the rim's plane.
+  EXPECT_GT(grown.ratio, 2);
+  EXPECT_GT(grown.length, 2 * grown.circumference);
+  EXPECT_GT(grown.amplitude, 1);
+  EXPECT_GT(grown.circumference, start.circumference);  // and it widened
+}
+
+TEST(DaffodilCorona, TheSheetIsAnAnnulusOfNonDegenerateTriangles) {
+  const std::string out = test_files::scratch_dir() + "daffodil_corona_12.vvm";
+  run_corona("12", out);
+  corona_graph::context ctx;
+  corona_graph::mesh S{ctx};
+  S.readXMLFile(out);
+  EXPECT_NO_THROW(vv::check_invariants(S, {true, false}));  // symmetric
+  std::vector<Pt> at;
+  std::size_t rim = 0, anchored = 0;
+  for (corona_graph::vertex v : vv::each(S)) {
+    at.push_back(v->pos);
+    rim += v->rim;
+    anchored += v->anchored;
+  }
+  EXPECT_EQ(rim, 48u);
+  EXPECT_EQ(anchored, 12u);
+  const auto triangles = vv::face_orbits(S, 3);
+  EXPECT_EQ(S.size(), 96u);
+  EXPECT_EQ(vv::edge_count(S), 228u);
+  EXPECT_EQ(triangles.size(), 132u);
+  EXPECT_EQ(long(S.size()) - long(vv::edge_count(S)) + long(triangles.size()), 0);  // an annulus
+  for (const auto& t : triangles) {
+    const double area = (at[t[1]] - at[t[0]]).cross(at[t[2]] - at[t[0]]).length() / 2;
+    EXPECT_GT(area, 0.1);  // the smallest is 0.26
+  }
+  for (corona_graph::vertex v : vv::each(S))
+    for (corona_graph::vertex n : vv::each(v)) EXPECT_EQ(vv::edge(v, n).rest, vv::edge(n, v).rest);
+}
+
+TEST(DaffodilCorona, TwoRunsExportTheSameBytes) {
+  const std::string dir = test_files::scratch_dir();
+  run_corona("8", dir + "dc_a.vvm");
+  run_corona("8", dir + "dc_b.vvm");
+  EXPECT_EQ(test_files::slurp(dir + "dc_a.vvm"), test_files::slurp(dir + "dc_b.vvm"));
+  EXPECT_FALSE(test_files::slurp(dir + "dc_a.vvm").empty());
 }
