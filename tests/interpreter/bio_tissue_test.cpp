@@ -273,3 +273,17 @@ TEST(DaffodilCorona, TwoRunsExportTheSameBytes) {
   EXPECT_EQ(test_files::slurp(dir + "dc_a.vvm"), test_files::slurp(dir + "dc_b.vvm"));
   EXPECT_FALSE(test_files::slurp(dir + "dc_a.vvm").empty());
 }
+
+TEST(DaffodilCorona, PlotsTheRimRatioAndWaveAmplitudeEveryStep) {
+  const std::string plots = test_files::scratch_dir() + "daffodil_corona.csv";
+  test_run::result r = batch("daffodil_corona", {"--steps", "3", "--plots", plots});
+  ASSERT_EQ(r.status, 0) << report(r);
+  std::istringstream in(test_files::slurp(plots));
+  std::string header;
+  std::getline(in, header);
+  EXPECT_NE(header.find("rim length / circumference"), std::string::npos) << header;
+  EXPECT_NE(header.find("wave amplitude"), std::string::npos) << header;
+  int rows = 0;
+  for (std::string line; std::getline(in, line);) ++rows;
+  EXPECT_EQ(rows, 4);  // the start and 3 steps
+}
