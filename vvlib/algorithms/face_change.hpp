@@ -1,15 +1,14 @@
 // What an edge insertion or deletion did to the faces around it, and the
-// face walk InsertEdge and DeleteEdge use to find out before they edit.
-//
-// Faces are the orbits of oriented edges, (x, y) -> (y, prevto x in y)
-// (LANGUAGE.md section 1): with counter-clockwise neighbourhoods a face
-// (.., p, c, n, ..) has n immediately before p in the rotation of c.
+// test InsertEdge and DeleteEdge use to find out before they edit (on the
+// face walk of face_walk.hpp).
 #pragma once
 
 #include <string>
 
 #include <vv/error.hpp>
 #include <vv/queries.hpp>
+
+#include "face_walk.hpp"
 
 namespace algorithms {
 
@@ -37,19 +36,7 @@ void require_mutual(const V& a, const V& b, const char* op, const std::string& p
 // (c, d); throws when the face does not close.
 template <class V>
 bool face_meets(const V& a, const V& b, const V& c, const V& d, const char* op, vv::where w) {
-  V x = a, y = b;
-  do {
-    if (x == c && y == d) return true;
-    V z = vv::prev_to(x, y, w);
-    if (!z)
-      throw vv::error(w, op, "the face of (" + vv::name_of(a) + ", " + vv::name_of(b) +
-                                 ") is not closed: the neighbourhoods around it are not symmetric");
-    x = y;
-    y = z;
-    // The step is one-to-one on oriented edges, so the walk comes back to
-    // (a, b) unless it meets a one-sided neighbour (above).
-  } while (!(x == a && y == b));
-  return false;
+  return walk_face(a, b, op, w, [&](const V& x, const V& y) { return x == c && y == d; });
 }
 
 // Whether the oriented edges (a, b) and (c, d), each between mutual

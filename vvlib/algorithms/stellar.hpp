@@ -15,6 +15,7 @@
 #include <vv/iteration.hpp>
 #include <vv/queries.hpp>
 
+#include "face_walk.hpp"
 #include "insert.hpp"
 
 namespace algorithms {
@@ -32,16 +33,10 @@ void require_edge(const V& a, const V& b, const char* op, vv::where w) {
 template <class V>
 std::vector<V> face_of(const V& a, const V& b, const char* op, vv::where w) {
   std::vector<V> face;
-  V x = a, y = b;
-  do {
+  walk_face(a, b, op, w, [&](const V& x, const V&) {
     face.push_back(x);
-    V z = vv::prev_to(x, y, w);
-    if (!z) throw vv::error(w, op, "the face after " + vv::name_of(a) + "-" + vv::name_of(b) + " is not closed");
-    x = y;
-    y = z;
-    // The step (x, y) -> (y, prevto x in y) is one-to-one, so the walk
-    // either meets a missing entry (above) or comes back to (a, b).
-  } while (!(x == a && y == b));
+    return false;
+  });
   return face;
 }
 
@@ -137,5 +132,17 @@ class Remove {
     m.remove(v);
   }
 };
+
+//! `p = halfway_to_average(v, ring);` — ½ v + 1/(2k) (r1 + .. + rk): v
+//! moved halfway to the average of the k points of `ring`. The smoothing
+//! rule of the stellar Catmull-Clark (catm, ring: the one-ring after the
+//! face split) and 4-8 (velh) grammars; the scheme chooses the ring.
+template <class P>
+P halfway_to_average(const P& v, const std::vector<P>& ring, vv::where w = vv::where::here()) {
+  if (ring.empty()) throw vv::error(w, "halfway_to_average", "the ring is empty: there is no average");
+  P sum = ring[0];
+  for (std::size_t i = 1; i < ring.size(); ++i) sum += ring[i];
+  return v * 0.5 + sum * (0.5 / static_cast<double>(ring.size()));
+}
 
 }  // namespace algorithms
