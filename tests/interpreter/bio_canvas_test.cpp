@@ -17,38 +17,13 @@
 #include <string>
 #include <vector>
 
-#include "run_interpreter.hpp"
-#include "test_files.hpp"
+#include "example_runs.hpp"
 
 namespace {
 
+using namespace example_runs;
+
 using Pt = util::Point<double>;
-
-test_run::result batch(std::vector<std::string> args) {
-  std::vector<std::string> all = {"--batch", "--quiet"};
-  all.insert(all.end(), args.begin(), args.end());
-  all.push_back(VV_SOURCE_DIR "/examples/radial_cells.vvp");
-  return test_run::run(test_run::interpreter(all), 300);
-}
-
-std::string report(const test_run::result& r) { return "stdout:\n" + r.out + "stderr:\n" + r.err; }
-
-// The first column after the step in a --plots CSV file ("cells").
-std::vector<std::string> cells_column(const std::string& path) {
-  std::istringstream in(test_files::slurp(path));
-  std::string line;
-  std::getline(in, line);
-  EXPECT_EQ(line.rfind("step,cells,", 0), 0u) << line;
-  std::vector<std::string> values;
-  while (std::getline(in, line)) {
-    std::istringstream ls(line);
-    std::string cell;
-    std::getline(ls, cell, ',');
-    std::getline(ls, cell, ',');
-    values.push_back(cell);
-  }
-  return values;
-}
 
 struct vertex_props {
   Pt pos;
@@ -73,17 +48,17 @@ double cross(const Pt& o, const Pt& a, const Pt& b) {
 
 TEST(RadialCells, SummaryAndCellCountsAreExact) {
   const std::string plots = test_files::scratch_dir() + "radial_cells.csv";
-  test_run::result r = batch({"--steps", "30", "--end", "--plots", plots});
+  test_run::result r = batch("radial_cells", {"--steps", "30", "--end", "--plots", plots});
   ASSERT_EQ(r.status, 0) << report(r);
   EXPECT_EQ(r.out, "53 cells, mean area 0.8782, 2 in the quiescent zone\n");
-  EXPECT_EQ(cells_column(plots), std::vector<std::string>({"7",  "7",  "7",  "7",  "7",  "7",  "7",  "7",  "7",  "7",  "7",
+  EXPECT_EQ(csv_column(plots, "cells"), std::vector<std::string>({"7",  "7",  "7",  "7",  "7",  "7",  "7",  "7",  "7",  "7",  "7",
                                                                  "7",  "7",  "7",  "13", "25", "25", "25", "25", "25", "25", "25",
                                                                  "25", "35", "38", "39", "42", "43", "46", "50", "53"}));
 }
 
 TEST(RadialCells, TheQuiescentZoneDividesLess) {
   // Without a quiescent zone the centre divides as fast as its area allows.
-  test_run::result r = batch({"--steps", "30", "--end", "--set", "quiescent_factor=1"});
+  test_run::result r = batch("radial_cells", {"--steps", "30", "--end", "--set", "quiescent_factor=1"});
   ASSERT_EQ(r.status, 0) << report(r);
   EXPECT_EQ(r.out, "55 cells, mean area 0.8472, 6 in the quiescent zone\n");
 }
@@ -93,7 +68,7 @@ TEST(RadialCells, TheTissueIsADiscOfCellFans) {
   const std::pair<int, long> runs[] = {{0, 7}, {15, 25}, {30, 53}};  // steps, cells
   for (auto [steps, expected_cells] : runs) {
     const std::string out = dir + "radial_cells_" + std::to_string(steps) + ".vvm";
-    test_run::result r = batch({"--steps", std::to_string(steps), "--export", out});
+    test_run::result r = batch("radial_cells", {"--steps", std::to_string(steps), "--export", out});
     ASSERT_EQ(r.status, 0) << report(r);
     SCOPED_TRACE(steps);
     graph::context ctx;
@@ -130,11 +105,5 @@ TEST(RadialCells, TheTissueIsADiscOfCellFans) {
 }
 
 TEST(RadialCells, TwoRunsExportTheSameBytes) {
-  const std::string dir = test_files::scratch_dir();
-  test_run::result a = batch({"--steps", "20", "--export", dir + "rc_a.vvm"});
-  test_run::result b = batch({"--steps", "20", "--export", dir + "rc_b.vvm"});
-  ASSERT_EQ(a.status, 0) << report(a);
-  ASSERT_EQ(b.status, 0) << report(b);
-  EXPECT_EQ(test_files::slurp(dir + "rc_a.vvm"), test_files::slurp(dir + "rc_b.vvm"));
-  EXPECT_FALSE(test_files::slurp(dir + "rc_a.vvm").empty());
+  expect_runs_export_the_same_bytes("radial_cells", "20");
 }

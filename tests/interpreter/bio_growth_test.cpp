@@ -17,31 +17,11 @@
 #include <string>
 #include <vector>
 
-#include "run_interpreter.hpp"
-#include "test_files.hpp"
+#include "example_runs.hpp"
 
 namespace {
 
-std::string example(const std::string& name) { return VV_SOURCE_DIR "/examples/" + name + ".vvp"; }
-
-test_run::result batch(const std::string& name, std::vector<std::string> args) {
-  std::vector<std::string> all = {"--batch", "--quiet"};
-  all.insert(all.end(), args.begin(), args.end());
-  all.push_back(example(name));
-  return test_run::run(test_run::interpreter(all), 300);
-}
-
-std::string report(const test_run::result& r) { return "stdout:\n" + r.out + "stderr:\n" + r.err; }
-
-// Runs a model for `steps` with its end block, exporting to a scratch file
-// named after `tag`; returns the run (the export's path in `exported`).
-test_run::result run_and_export(const std::string& name, const std::string& steps, const std::string& tag,
-                                std::string& exported, std::vector<std::string> extra = {}) {
-  exported = test_files::scratch_dir() + tag + ".vvm";
-  std::vector<std::string> args = {"--steps", steps, "--end", "--export", exported};
-  args.insert(args.end(), extra.begin(), extra.end());
-  return batch(name, args);
-}
+using namespace example_runs;
 
 using Pt = util::Point<double>;
 
@@ -147,10 +127,7 @@ TEST(KochLSystem, TheStringIsOneClosedChainReadInOneDirection) {
 }
 
 TEST(KochLSystem, ASecondRunExportsTheSameBytes) {
-  std::string first, second;
-  ASSERT_EQ(run_and_export("lsystem_koch", "4", "koch_a", first).status, 0);
-  ASSERT_EQ(run_and_export("lsystem_koch", "4", "koch_b", second).status, 0);
-  EXPECT_EQ(test_files::slurp(first), test_files::slurp(second));
+  expect_runs_export_the_same_bytes("lsystem_koch", "4");
 }
 
 // ---- examples/phyllotaxis.vvp ----
@@ -206,10 +183,7 @@ TEST(Phyllotaxis, PlotsOneDivergenceAnglePerPrimordium) {
 }
 
 TEST(Phyllotaxis, ASecondRunExportsTheSameBytes) {
-  std::string first, second;
-  ASSERT_EQ(run_and_export("phyllotaxis", "300", "phyllotaxis_a", first).status, 0);
-  ASSERT_EQ(run_and_export("phyllotaxis", "300", "phyllotaxis_b", second).status, 0);
-  EXPECT_EQ(test_files::slurp(first), test_files::slurp(second));
+  expect_runs_export_the_same_bytes("phyllotaxis", "300");
 }
 
 // ---- examples/sea_shell.vvp ----
@@ -246,8 +220,5 @@ TEST(SeaShell, WithoutRefinementEveryRingHasTheFirstMarginsCells) {
 }
 
 TEST(SeaShell, ASecondRunExportsTheSameBytes) {
-  std::string first, second;
-  ASSERT_EQ(run_and_export("sea_shell", "90", "shell_a", first).status, 0);
-  ASSERT_EQ(run_and_export("sea_shell", "90", "shell_b", second).status, 0);
-  EXPECT_EQ(test_files::slurp(first), test_files::slurp(second));
+  expect_runs_export_the_same_bytes("sea_shell", "90");
 }

@@ -17,43 +17,13 @@
 #include <string>
 #include <vector>
 
-#include "run_interpreter.hpp"
-#include "test_files.hpp"
+#include "example_runs.hpp"
 
 namespace {
 
+using namespace example_runs;
+
 using Pt = util::Point<double>;
-
-test_run::result batch(const std::string& model, std::vector<std::string> args) {
-  std::vector<std::string> all = {"--batch", "--quiet"};
-  all.insert(all.end(), args.begin(), args.end());
-  all.push_back(VV_SOURCE_DIR "/examples/" + model);
-  return test_run::run(test_run::interpreter(all), 300);
-}
-
-std::string report(const test_run::result& r) { return "stdout:\n" + r.out + "stderr:\n" + r.err; }
-
-// One column of a --plots CSV file, by its header.
-std::vector<std::string> csv_column(const std::string& path, const std::string& name) {
-  std::istringstream in(test_files::slurp(path));
-  std::string line;
-  std::getline(in, line);
-  std::vector<std::string> header;
-  std::istringstream hs(line);
-  for (std::string cell; std::getline(hs, cell, ',');) header.push_back(cell);
-  std::size_t column = header.size();
-  for (std::size_t i = 0; i < header.size(); ++i)
-    if (header[i] == name) column = i;
-  std::vector<std::string> values;
-  while (std::getline(in, line)) {
-    std::istringstream ls(line);
-    std::string cell;
-    for (std::size_t i = 0; i <= column && std::getline(ls, cell, ','); ++i) {
-    }
-    values.push_back(cell);
-  }
-  return values;
-}
 
 struct vertex_props {
   Pt pos, vel;
@@ -124,7 +94,7 @@ const std::vector<std::string> doubling = {"1", "2", "4", "8", "16", "32", "64"}
 
 TEST(KornSpalding, CellsDoubleEveryGeneration) {
   const std::string plots = test_files::scratch_dir() + "korn_spalding.csv";
-  test_run::result r = batch("korn_spalding.vvp", {"--steps", "6", "--end", "--plots", plots});
+  test_run::result r = batch("korn_spalding", {"--steps", "6", "--end", "--plots", plots});
   ASSERT_EQ(r.status, 0) << report(r);
   EXPECT_EQ(csv_column(plots, "cells"), doubling);
   EXPECT_EQ(r.out.rfind("generation 6: 64 cells, mean area ", 0), 0u) << r.out;
@@ -139,7 +109,7 @@ TEST(KornSpalding, EveryCellIsAConvexHexagonWithOppositeWallsMarkedAlike) {
   const std::string dir = test_files::scratch_dir();
   for (int steps : {1, 2, 5}) {
     const std::string out = dir + "korn_spalding_" + std::to_string(steps) + ".vvm";
-    test_run::result r = batch("korn_spalding.vvp", {"--steps", std::to_string(steps), "--export", out});
+    test_run::result r = batch("korn_spalding", {"--steps", std::to_string(steps), "--export", out});
     ASSERT_EQ(r.status, 0) << report(r);
     SCOPED_TRACE(steps);
     expect_hexagonal_tissue(tissue(out), std::size_t(1) << steps);
@@ -147,13 +117,7 @@ TEST(KornSpalding, EveryCellIsAConvexHexagonWithOppositeWallsMarkedAlike) {
 }
 
 TEST(KornSpalding, TwoRunsExportTheSameBytes) {
-  const std::string dir = test_files::scratch_dir();
-  test_run::result a = batch("korn_spalding.vvp", {"--steps", "4", "--export", dir + "ks_a.vvm"});
-  test_run::result b = batch("korn_spalding.vvp", {"--steps", "4", "--export", dir + "ks_b.vvm"});
-  ASSERT_EQ(a.status, 0) << report(a);
-  ASSERT_EQ(b.status, 0) << report(b);
-  EXPECT_EQ(test_files::slurp(dir + "ks_a.vvm"), test_files::slurp(dir + "ks_b.vvm"));
-  EXPECT_FALSE(test_files::slurp(dir + "ks_a.vvm").empty());
+  expect_runs_export_the_same_bytes("korn_spalding", "4");
 }
 
 // ---- examples/cell_system.vvp ----
@@ -169,7 +133,7 @@ std::vector<std::vector<std::uint32_t>> inner_cells(const tissue& t) {
 
 TEST(CellSystem, CellsDoubleAtEverySettleEvent) {
   const std::string plots = test_files::scratch_dir() + "cell_system.csv";
-  test_run::result r = batch("cell_system.vvp", {"--steps", "6", "--end", "--plots", plots});
+  test_run::result r = batch("cell_system", {"--steps", "6", "--end", "--plots", plots});
   ASSERT_EQ(r.status, 0) << report(r);
   EXPECT_EQ(csv_column(plots, "cells"), doubling);
   EXPECT_EQ(r.out.rfind("generation 6: 64 cells, mean area ", 0), 0u) << r.out;
@@ -179,7 +143,7 @@ TEST(CellSystem, EveryCellIsConvexAndTurnedByTheSameAngle) {
   const std::string dir = test_files::scratch_dir();
   for (int steps : {1, 3, 5}) {
     const std::string out = dir + "cell_system_" + std::to_string(steps) + ".vvm";
-    test_run::result r = batch("cell_system.vvp", {"--steps", std::to_string(steps), "--export", out});
+    test_run::result r = batch("cell_system", {"--steps", std::to_string(steps), "--export", out});
     ASSERT_EQ(r.status, 0) << report(r);
     SCOPED_TRACE(steps);
     const tissue t(out, 1000);
@@ -207,11 +171,5 @@ TEST(CellSystem, EveryCellIsConvexAndTurnedByTheSameAngle) {
 }
 
 TEST(CellSystem, TwoRunsExportTheSameBytes) {
-  const std::string dir = test_files::scratch_dir();
-  test_run::result a = batch("cell_system.vvp", {"--steps", "4", "--export", dir + "cs_a.vvm"});
-  test_run::result b = batch("cell_system.vvp", {"--steps", "4", "--export", dir + "cs_b.vvm"});
-  ASSERT_EQ(a.status, 0) << report(a);
-  ASSERT_EQ(b.status, 0) << report(b);
-  EXPECT_EQ(test_files::slurp(dir + "cs_a.vvm"), test_files::slurp(dir + "cs_b.vvm"));
-  EXPECT_FALSE(test_files::slurp(dir + "cs_a.vvm").empty());
+  expect_runs_export_the_same_bytes("cell_system", "4");
 }

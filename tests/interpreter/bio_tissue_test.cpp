@@ -18,21 +18,13 @@
 #include <string>
 #include <vector>
 
-#include "run_interpreter.hpp"
-#include "test_files.hpp"
+#include "example_runs.hpp"
 
 namespace {
 
+using namespace example_runs;
+
 using Pt = util::Point<double>;
-
-test_run::result batch(const std::string& name, std::vector<std::string> args) {
-  std::vector<std::string> all = {"--batch", "--quiet"};
-  all.insert(all.end(), args.begin(), args.end());
-  all.push_back(VV_SOURCE_DIR "/examples/" + name + ".vvp");
-  return test_run::run(test_run::interpreter(all), 300);
-}
-
-std::string report(const test_run::result& r) { return "stdout:\n" + r.out + "stderr:\n" + r.err; }
 
 // What root_meristem.vvp's end block prints.
 struct root_summary {
@@ -149,13 +141,7 @@ TEST(RootMeristem, TheTubeIsADiscOfNonDegenerateTriangles) {
 }
 
 TEST(RootMeristem, TwoRunsExportTheSameBytes) {
-  const std::string dir = test_files::scratch_dir();
-  test_run::result a = batch("root_meristem", {"--steps", "5", "--export", dir + "rm_a.vvm"});
-  test_run::result b = batch("root_meristem", {"--steps", "5", "--export", dir + "rm_b.vvm"});
-  ASSERT_EQ(a.status, 0) << report(a);
-  ASSERT_EQ(b.status, 0) << report(b);
-  EXPECT_EQ(test_files::slurp(dir + "rm_a.vvm"), test_files::slurp(dir + "rm_b.vvm"));
-  EXPECT_FALSE(test_files::slurp(dir + "rm_a.vvm").empty());
+  expect_runs_export_the_same_bytes("root_meristem", "5");
 }
 
 TEST(RootMeristem, PlotsTheBendingAngleEveryStep) {
