@@ -72,9 +72,13 @@ inline std::vector<std::string> interpreter(std::vector<std::string> args) {
   return argv;
 }
 
-//! The same inside a virtual X display (Xvfb), for the viewer.
+//! The same inside a virtual X display (Xvfb), for the viewer. Test
+//! executables run side by side, so each starts its search for a free
+//! display at a number of its own (xvfb-run -a checks, then starts: two
+//! searches from the same number can race for one display).
 inline std::vector<std::string> in_virtual_display(std::vector<std::string> argv) {
-  std::vector<std::string> out = {"xvfb-run", "-a", "-s", "-screen 0 1280x1024x24"};
+  const std::string first_display = std::to_string(100 + getpid() % 20000);
+  std::vector<std::string> out = {"xvfb-run", "-a", "-n", first_display, "-s", "-screen 0 1280x1024x24"};
   out.insert(out.end(), argv.begin(), argv.end());
   return out;
 }
