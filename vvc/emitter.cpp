@@ -189,7 +189,7 @@ class emitter {
     std::string present;
     for (const char* name : names) {
       bool has = false;
-      for (const std::string& b : p_.blocks) has = has || b == name;
+      for (const top_item& it : p_.items) has = has || (it.kind == top_item::block && it.block_name->text == name);
       s += std::string("VV_PLUGIN_EXPORT const char* vv_plugin_") + name + "() { ";
       if (has) {
         s += std::string("return vv::plugin::guarded(vv_exchange, vv_block_") + name + "); }\n";

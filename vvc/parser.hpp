@@ -111,12 +111,10 @@ class parser {
   bool starts_parameter() const;
   void parse_parameter(program& p);
   void analyse_fields(property_block& block);
-  void note_uses(const pieces& run);
 
   const std::vector<token>& toks_;
   diagnostics& diag_;
   std::size_t pos_ = 0;
-  int depth_ = 0;             // nesting of bodies (0: top level)
   int nesting_ = 0;           // groups, operands and statements open now
   bool gave_up_ = false;      // nested past max_nesting: the rest is not parsed
   //! Guards recursion: past max_nesting the input is given up on (with an

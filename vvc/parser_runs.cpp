@@ -139,9 +139,7 @@ piece parser::parse_group(const pieces& before, mode m) {
     if (lambda || (m == mode::declaration && starts_function_body(before))) {
       p.kind = piece_kind::body;
       p.lambda = lambda;
-      ++depth_;
       body_statements(p.body);
-      --depth_;
     } else if (int scope = opens_scope_body(before, before.size())) {
       p.kind = scope == 1 ? piece_kind::class_body : piece_kind::group;
       inner = mode::declaration;

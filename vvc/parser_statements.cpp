@@ -49,9 +49,7 @@ void parser::body_statements(stmt_list& out) {
 // compound = "{" statements "}"
 stmt_ptr parser::parse_compound() {
   auto s = make_stmt(stmt_kind::compound, take());
-  ++depth_;
   body_statements(s->children);
-  --depth_;
   if (at("}")) s->end = take();
   else
     error(*s->tok, "unterminated block: this '{' has no matching '}'");

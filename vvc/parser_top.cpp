@@ -97,7 +97,6 @@ void parser::parse_execution_block(program& p) {
     if (other.kind == top_item::block && other.block_name->text == name)
       error(*item.block_name, "the execution block '" + name + "' is given twice (first at line " +
                                   std::to_string(other.block_name->line) + ")");
-  p.blocks.push_back(name);
   item.block_body = parse_compound();
   p.items.push_back(std::move(item));
 }
