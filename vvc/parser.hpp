@@ -35,7 +35,8 @@ namespace vvc {
 
 class parser {
  public:
-  parser(const std::vector<token>& tokens, diagnostics& diag) : toks_(tokens), diag_(diag) {}
+  parser(const std::vector<token>& tokens, diagnostics& diag)
+      : toks_(tokens), diag_(diag), looked_ahead_(tokens.size(), unknown) {}
   program parse_program();
 
  private:
@@ -57,6 +58,16 @@ class parser {
   static std::string found(const token& t);
   //! Skips to just after the next ; or to a } that closes the statement.
   void recover();
+
+  // ---- lookahead by parsing ----
+  //! Whether the vv form that would start at the cursor is there: runs
+  //! `attempt` (which parses part of the form and says whether what
+  //! follows fits) with diagnostics held back, then returns to the cursor.
+  //! A form nested too deeply to parse counts as there: the real parse
+  //! then takes the same path and reports the depth. Answers are kept per
+  //! position, so nested lookaheads try each position once.
+  template <class Attempt>
+  bool looks_ahead(Attempt attempt);
 
   // ---- runs of tokens (parser_runs.cpp) ----
   enum class mode {
@@ -89,16 +100,13 @@ class parser {
   //! Turns a parenthesised group that holds exactly `operand ^ operand`
   //! (or `|`) into an edge access.
   static void as_edge_access(piece& group);
-  //! The index just after the operand starting at token i (npos if none),
-  //! found by scanning tokens: decides `is X in V` without backtracking.
-  std::size_t scan_operand(std::size_t i, int depth = 0) const;
 
   // ---- statements (parser_statements.cpp) ----
   stmt_ptr parse_statement();
   stmt_ptr parse_compound();
   stmt_ptr parse_simple();
   bool parse_edit(stmt& s);
-  bool edit_follows() const;
+  bool edit_follows();
   stmt_ptr parse_forall();
   bool parse_vertex_declaration(stmt& s);
   stmt_ptr parse_body_statements(const token* open);
@@ -135,6 +143,24 @@ class parser {
     bool ok_;
   };
   const token* first_use_[3] = {nullptr, nullptr, nullptr};  // edge, vertex, mesh outside blocks
+  enum : signed char { unknown, there, not_there };
+  std::vector<signed char> looked_ahead_;  // per token: the answer of looks_ahead there
 };
+
+template <class Attempt>
+bool parser::looks_ahead(Attempt attempt) {
+  if (looked_ahead_[pos_] != unknown) return looked_ahead_[pos_] == there;
+  const std::size_t start = pos_;
+  const bool gave_up = gave_up_;
+  diag_.hold();
+  bool fits = attempt();
+  bool errors = diag_.release();
+  bool too_deep = gave_up_ && !gave_up;
+  pos_ = start;
+  gave_up_ = gave_up;
+  bool answer = too_deep || (fits && !errors);
+  looked_ahead_[start] = answer ? there : not_there;
+  return answer;
+}
 
 }  // namespace vvc

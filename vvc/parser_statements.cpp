@@ -161,7 +161,7 @@ stmt_ptr parser::parse_simple() {
 // A vv edit starts here (not a C++ use of the same word): the word is
 // followed by an operand, and, when that operand is parenthesised, by the
 // edit's next keyword (`erase (x) from v;` but `erase(x);` is a call).
-bool parser::edit_follows() const {
+bool parser::edit_follows() {
   std::string_view w = peek().text;
   if (w == "synchronise" || w == "synchronize") return true;
   const token& next = peek(1);
@@ -169,20 +169,12 @@ bool parser::edit_follows() const {
   // The operand is missing but the edit's next word is there: `add to M;`.
   if (next.is_word(continuation_of(w)) || (w == "splice" && (next.is_word("after") || next.is_word("before"))))
     return true;
-  if (next.is("(")) {
-    int depth = 0;
-    for (std::size_t k = pos_ + 1; k < toks_.size(); ++k) {
-      if (toks_[k].is("(")) ++depth;
-      if (toks_[k].is(")") && --depth == 0) {
-        if (k + 1 >= toks_.size()) return false;
-        const token& after = toks_[k + 1];
-        return w == "splice" ? after.is_word("after") || after.is_word("before")
-                             : after.is(continuation_of(w));
-      }
-      if (toks_[k].kind == tok::eof) return false;
-    }
-    return false;
-  }
+  if (next.is("("))
+    return looks_ahead([&] {
+      take();
+      parse_group({}, mode::expression);
+      return w == "splice" ? at("after") || at("before") : at(continuation_of(w));
+    });
   return starts_operand(next) && !next.is("*") && !next.is("&") && !next.is("-") &&
          !next.is("+") && !next.is("++") && !next.is("--");
 }

@@ -9,22 +9,6 @@
 
 namespace vvc {
 
-namespace {
-
-// From an opening "(" at index i, the index of its matching ")" (or npos).
-std::size_t matching_paren(const std::vector<token>& toks, std::size_t i) {
-  int depth = 0;
-  for (std::size_t k = i; k < toks.size(); ++k) {
-    if (toks[k].is("(")) ++depth;
-    if (toks[k].is(")") && --depth == 0) return k;
-    if (toks[k].kind == tok::eof || toks[k].is(";")) break;
-  }
-  return std::string::npos;
-}
-
-
-}  // namespace
-
 bool parser::starts_operand(const token& t) const {
   switch (t.kind) {
     case tok::identifier:
@@ -57,15 +41,19 @@ bool parser::parse_vv_expression(pieces& out) {
   if (!t.is_identifier()) return false;
   std::string_view w = t.text;
   bool query = w == "nextto" || w == "prevto" || w == "valence" || w == "labelof";
-  if ((w == "next" || w == "prev") && peek(1).is("(")) {
-    std::size_t close = matching_paren(toks_, pos_ + 1);
-    query = close != std::string::npos && close + 1 < toks_.size() && toks_[close + 1].is_word("to");
-  }
+  if ((w == "next" || w == "prev") && peek(1).is("("))
+    query = looks_ahead([&] {
+      take();
+      parse_group({}, mode::expression);
+      return at("to");
+    });
   if ((w == "any" || w == "flagged") && peek(1).is_word("in")) query = true;
-  if (w == "is" && starts_operand(peek(1))) {
-    std::size_t end = scan_operand(pos_ + 1);
-    query = end != std::string::npos && toks_[end].is_word("in");
-  }
+  if (w == "is" && starts_operand(peek(1)))
+    query = looks_ahead([&] {
+      take();
+      parse_operand("after 'is'");
+      return at("in");
+    });
   if (!query) return false;
   out.push_back(parse_query());
   return true;
@@ -378,80 +366,6 @@ void parser::as_edge_access(piece& g) {
   e.parts.push_back(std::move(x));
   e.parts.push_back(std::move(y));
   g = std::move(e);
-}
-
-// The same grammar as parse_operand, read over tokens without building
-// anything (so `is` can look ahead for its `in`).
-std::size_t parser::scan_operand(std::size_t i, int depth) const {
-  const std::size_t npos = std::string::npos;
-  if (depth > max_nesting) return npos;
-  auto at = [&](std::size_t k) -> const token& { return k < toks_.size() ? toks_[k] : toks_.back(); };
-  auto skip_group = [&](std::size_t k) -> std::size_t {  // k at an opener
-    int level = 0;
-    for (; k < toks_.size(); ++k) {
-      const token& t = toks_[k];
-      if (t.is("(") || t.is("[") || t.is("{")) ++level;
-      else if ((t.is(")") || t.is("]") || t.is("}")) && --level == 0) return k + 1;
-      else if (t.kind == tok::eof) break;
-    }
-    return npos;
-  };
-  // operand "in" operand, from k
-  auto operand_in_operand = [&](std::size_t k) -> std::size_t {
-    k = scan_operand(k, depth + 1);
-    if (k == npos || !at(k).is_word("in")) return npos;
-    return scan_operand(k + 1, depth + 1);
-  };
-  while (at(i).is("!") || at(i).is("~") || at(i).is("-") || at(i).is("+") || at(i).is("*") ||
-         at(i).is("&") || at(i).is("++") || at(i).is("--"))
-    ++i;
-  bool old = false;
-  while (at(i).kind == tok::backtick) ++i, old = true;
-  const token& t = at(i);
-  if (t.kind == tok::at) {  // a path: @ [&] ( ... ) ops @
-    std::size_t k = i + 1;
-    if (at(k).is("&")) ++k;
-    if (!at(k).is("(")) return npos;
-    k = skip_group(k);
-    while (k != npos && k < toks_.size() && at(k).kind != tok::at) {
-      if (at(k).is(";") || at(k).kind == tok::eof) return npos;
-      ++k;
-    }
-    i = k == npos ? npos : k + 1;
-  } else if (t.is_identifier() && !old) {
-    std::string_view w = t.text;
-    if (w == "nextto" || w == "prevto") {
-      if (at(i + 1).is_word("flag") && at(i + 2).is_word("in")) return scan_operand(i + 3, depth + 1);
-      return operand_in_operand(i + 1);
-    }
-    if ((w == "next" || w == "prev") && at(i + 1).is("(")) {
-      std::size_t k = skip_group(i + 1);
-      if (k != npos && at(k).is_word("to")) return operand_in_operand(k + 1);
-    }
-    if ((w == "any" || w == "flagged") && at(i + 1).is_word("in")) return scan_operand(i + 2, depth + 1);
-    if (w == "valence" || w == "labelof") return scan_operand(i + 1, depth + 1);
-    if (w == "is") {
-      std::size_t k = operand_in_operand(i + 1);
-      if (k != npos) return k;
-    }
-    ++i;
-  } else if (t.is("(")) {
-    i = skip_group(i);
-  } else if (t.is_identifier() || t.kind == tok::number || t.kind == tok::character || t.is("::")) {
-    ++i;
-  } else if (t.kind == tok::string) {
-    while (at(i).kind == tok::string) ++i;
-  } else {
-    return npos;
-  }
-  while (i != npos) {
-    const token& u = at(i);
-    if (u.is("(") || u.is("[")) i = skip_group(i);
-    else if ((u.is(".") || u.is("->") || u.is("::") || u.kind == tok::dollar) && at(i + 1).is_identifier()) i += 2;
-    else if (u.is("++") || u.is("--")) ++i;
-    else break;
-  }
-  return i;
 }
 
 }  // namespace vvc
