@@ -93,6 +93,8 @@ class parser {
   bool starts_operand(const token& t) const;
   //! postfix = "(" run ")" | "[" run "]" | "." name | "->" name | "::" name | "$" name | "++" | "--"
   void parse_postfix(pieces& out, bool allow_property);
+  //! property = "$" name, appended to `out`; false after an error.
+  bool parse_property(pieces& out);
   piece parse_old_state();
   void refuse_writing_the_old_state(const pieces& out, const token& op);
   piece parse_path();

@@ -21,7 +21,7 @@ bool is_specifier_token(const piece& p) {
   if (p.kind != piece_kind::token) return false;
   const token& t = *p.tok;
   if (t.kind == tok::identifier)
-    return !is_expression_keyword(t.text) || t.text == "noexcept";
+    return !expression_follows(t.text) || t.text == "noexcept";
   return t.kind == tok::punct &&
          (t.text == "&" || t.text == "&&" || t.text == "*" || t.text == "->" || t.text == "::" ||
           t.text == "<" || t.text == ">" || t.text == ",");
@@ -97,16 +97,7 @@ pieces parser::parse_run(std::initializer_list<std::string_view> stops, mode m,
     if (parse_vv_expression(out)) continue;
     if (t.kind == tok::dollar) {
       if (!ends_operand(out)) error(t, "'$' must follow a vertex, as in v$pos");
-      take();
-      const token& name = peek();
-      if (!name.is_identifier()) {
-        error(name, "expected a property name after '$', found " + found(name));
-        continue;
-      }
-      piece p;
-      p.kind = piece_kind::property;
-      p.tok = take();
-      out.push_back(std::move(p));
+      parse_property(out);
       continue;
     }
     refuse_writing_the_old_state(out, t);

@@ -15,23 +15,6 @@ stmt_ptr make_stmt(stmt_kind k, const token* t) {
   return s;
 }
 
-// The keyword that must follow the first operand of each edit, which tells
-// an edit from a C++ call of a function that happens to share its name.
-std::string_view continuation_of(std::string_view edit) {
-  if (edit == "erase" || edit == "remove") return "from";
-  if (edit == "replace" || edit == "merge") return "with";
-  if (edit == "flag") return "in";
-  if (edit == "add") return "to";
-  if (edit == "clear") return ";";
-  return "";
-}
-
-bool is_edit_word(std::string_view w) {
-  return w == "make" || w == "erase" || w == "replace" || w == "splice" || w == "flag" ||
-         w == "add" || w == "remove" || w == "merge" || w == "clear" || w == "synchronise" ||
-         w == "synchronize";
-}
-
 }  // namespace
 
 // statements = { statement } up to "}"
@@ -125,15 +108,14 @@ stmt_ptr parser::parse_statement() {
       }
       return s;
     }
-    if (w == "case" || w == "default" || (peek(1).is(":") && !is_reserved_vv_word(w) &&
-                                          !is_expression_keyword(w))) {
+    if (w == "case" || w == "default" || (peek(1).is(":") && is_plain_name(t))) {
       auto s = make_stmt(stmt_kind::label, &t);
       s->head = parse_run({":"}, mode::expression);
       if (const token* colon = expect(":", "after the label")) s->head.push_back(token_piece(colon));
       return s;
     }
     if (w == "forall") return parse_forall();
-    if (is_edit_word(w) && edit_follows()) {
+    if (has_role(w, word_role::edit) && edit_follows()) {
       auto s = make_stmt(stmt_kind::edit, &t);
       if (!parse_edit(*s)) recover();
       return s;
@@ -162,21 +144,21 @@ stmt_ptr parser::parse_simple() {
 // followed by an operand, and, when that operand is parenthesised, by the
 // edit's next keyword (`erase (x) from v;` but `erase(x);` is a call).
 bool parser::edit_follows() {
-  std::string_view w = peek().text;
-  if (w == "synchronise" || w == "synchronize") return true;
+  const vv_word& edit = *find_word(peek().text, word_role::edit);
+  if (edit.reserved) return true;  // synchronise
+  auto continues_at = [&](const token& t) { return t.is(edit.then) || (!edit.or_then.empty() && t.is(edit.or_then)); };
   const token& next = peek(1);
-  if (w == "make") return next.is("{") || next.is_word("nb_of");
+  if (edit.text == "make") return next.is("{") || next.is_word("nb_of");
   // The operand is missing but the edit's next word is there: `add to M;`.
-  if (next.is_word(continuation_of(w)) || (w == "splice" && (next.is_word("after") || next.is_word("before"))))
-    return true;
+  if (next.is_identifier() && continues_at(next)) return true;
   if (next.is("("))
     return looks_ahead([&] {
       take();
       parse_group({}, mode::expression);
-      return w == "splice" ? at("after") || at("before") : at(continuation_of(w));
+      return continues_at(peek());
     });
-  return starts_operand(next) && !next.is("*") && !next.is("&") && !next.is("-") &&
-         !next.is("+") && !next.is("++") && !next.is("--");
+  // `erase * x` and `erase - x` are arithmetic on a variable `erase`.
+  return starts_operand(next) && (!is_prefix_operator(next) || next.is("!") || next.is("~"));
 }
 
 // edit = "make" "{" run {"," run} "}" "nb_of" operand ";"
@@ -262,7 +244,7 @@ bool parser::parse_edit(stmt& s) {
   } else if (w == "flag" || w == "add" || w == "remove" || w == "merge") {
     s.edit = w == "flag" ? edit_kind::flag : w == "add" ? edit_kind::add
              : w == "remove" ? edit_kind::remove : edit_kind::merge;
-    std::string_view next = continuation_of(w);
+    std::string_view next = find_word(w, word_role::edit)->then;
     operand("after '" + w + "'");
     ok = word(next, "in '" + w + " ... " + std::string(next) + " ...'");
     if (ok) operand("after '" + std::string(next) + "'");

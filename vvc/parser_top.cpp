@@ -4,13 +4,6 @@
 
 namespace vvc {
 
-namespace {
-
-int property_index(std::string_view w) { return w == "edge" ? 0 : w == "vertex" ? 1 : w == "mesh" ? 2 : -1; }
-const char* property_name(int i) { return i == 0 ? "edge" : i == 1 ? "vertex" : "mesh"; }
-
-}  // namespace
-
 // program = { preprocessor-line | property-block | execution-block | declaration }
 program parser::parse_program() {
   program p;
@@ -21,9 +14,9 @@ program parser::parse_program() {
       item.kind = top_item::preproc;
       item.tok = take();
       p.items.push_back(std::move(item));
-    } else if (property_index(t.text) >= 0 && t.is_identifier() && peek(1).is("{")) {
+    } else if (property_block_index(t.text) >= 0 && t.is_identifier() && peek(1).is("{")) {
       parse_property_block(p);
-    } else if (t.is_identifier() && is_block_name(t.text) && peek(1).is("{")) {
+    } else if (t.is_identifier() && has_role(t.text, word_role::execution_block) && peek(1).is("{")) {
       parse_execution_block(p);
     } else if (starts_parameter()) {
       parse_parameter(p);
@@ -38,7 +31,7 @@ program parser::parse_program() {
   for (std::size_t i = 0; i < p.items.size(); ++i)
     if (p.items[i].kind == top_item::property) p.last_property_item = i;
   for (const property_block& b : p.properties) {
-    int k = property_index(b.keyword->text);
+    int k = property_block_index(b.keyword->text);
     (k == 0 ? p.edge : k == 1 ? p.vertex : p.mesh) = &b;
   }
   return p;
@@ -49,15 +42,15 @@ program parser::parse_program() {
 void parser::parse_property_block(program& p) {
   property_block b;
   b.keyword = take();
-  int k = property_index(b.keyword->text);
+  int k = property_block_index(b.keyword->text);
   for (const property_block& other : p.properties) {
-    int j = property_index(other.keyword->text);
+    int j = property_block_index(other.keyword->text);
     if (j == k)
-      error(*b.keyword, std::string("a second ") + property_name(k) + " block (the first is at line " +
+      error(*b.keyword, "a second " + std::string(property_block_word(k)) + " block (the first is at line " +
                             std::to_string(other.keyword->line) + ")");
     else if (j > k)
-      error(*b.keyword, std::string("the ") + property_name(k) + " block must come before the " +
-                            property_name(j) + " block (property blocks go edge, vertex, mesh)");
+      error(*b.keyword, "the " + std::string(property_block_word(k)) + " block must come before the " +
+                            std::string(property_block_word(j)) + " block (property blocks go edge, vertex, mesh)");
   }
   // All blocks come before any other use of any of the three words: the
   // model's types are complete only after the last block.
@@ -65,7 +58,7 @@ void parser::parse_property_block(program& p) {
   for (const token* u : first_use_)
     if (u && !used) used = u;
   if (used)
-    error(*b.keyword, std::string("the ") + property_name(k) +
+    error(*b.keyword, "the " + std::string(property_block_word(k)) +
                           " block must come before any other use of '" + std::string(used->text) +
                           "' (used at line " + std::to_string(used->line) + ")");
   b.open = take();
@@ -73,7 +66,7 @@ void parser::parse_property_block(program& p) {
   if (at("}")) {
     b.close = take();
   } else {
-    error(*b.open, std::string("unterminated ") + property_name(k) + " block: this '{' has no matching '}'");
+    error(*b.open, "unterminated " + std::string(property_block_word(k)) + " block: this '{' has no matching '}'");
     return;
   }
   accept(";");
@@ -104,7 +97,7 @@ void parser::parse_execution_block(program& p) {
 // `param` is a word of ours only before a parameter's type and name, so a
 // C++ program may still call a variable `param`.
 bool parser::starts_parameter() const {
-  if (!peek().is_word("param") || !peek(2).is_identifier()) return false;
+  if (!(peek().is_identifier() && has_role(peek().text, word_role::parameter)) || !peek(2).is_identifier()) return false;
   for (std::string_view type : {"bool", "int", "unsigned", "float", "double"})
     if (peek(1).is_word(type)) return true;
   return false;
@@ -183,7 +176,7 @@ void parser::parse_top_declaration(program& p) {
     }
   }
   for (std::size_t k = start; k < pos_; ++k) {
-    int w = toks_[k].is_identifier() ? property_index(toks_[k].text) : -1;
+    int w = toks_[k].is_identifier() ? property_block_index(toks_[k].text) : -1;
     if (w >= 0 && !first_use_[w]) first_use_[w] = &toks_[k];
   }
   p.items.push_back(std::move(item));

@@ -12,7 +12,7 @@ namespace vvc {
 bool parser::starts_operand(const token& t) const {
   switch (t.kind) {
     case tok::identifier:
-      return !is_expression_keyword(t.text) || t.text == "sizeof" || t.text == "new";
+      return !expression_follows(t.text) || t.text == "sizeof" || t.text == "new";
     case tok::number:
     case tok::string:
     case tok::character:
@@ -20,8 +20,7 @@ bool parser::starts_operand(const token& t) const {
     case tok::at:
       return true;
     case tok::punct:
-      return t.text == "(" || t.text == "!" || t.text == "~" || t.text == "::" || t.text == "*" ||
-             t.text == "&" || t.text == "-" || t.text == "+" || t.text == "++" || t.text == "--";
+      return t.text == "(" || t.text == "::" || is_prefix_operator(t);
     default:
       return false;
   }
@@ -40,7 +39,8 @@ bool parser::parse_vv_expression(pieces& out) {
   }
   if (!t.is_identifier()) return false;
   std::string_view w = t.text;
-  bool query = w == "nextto" || w == "prevto" || w == "valence" || w == "labelof";
+  if (!has_role(w, word_role::query)) return false;
+  bool query = is_reserved_vv_word(w);  // nextto, prevto, valence, labelof
   if ((w == "next" || w == "prev") && peek(1).is("("))
     query = looks_ahead([&] {
       take();
@@ -121,8 +121,7 @@ pieces parser::parse_operand(const std::string& context) {
   nesting_guard guard(*this);
   if (!guard.ok()) return out;
   const token& t = peek();
-  if (t.kind == tok::punct && (t.text == "!" || t.text == "~" || t.text == "-" || t.text == "+" ||
-                               t.text == "*" || t.text == "&" || t.text == "++" || t.text == "--")) {
+  if (is_prefix_operator(t)) {
     out.push_back(token_piece(take()));
     pieces rest = parse_operand(context);
     out.insert(out.end(), std::make_move_iterator(rest.begin()), std::make_move_iterator(rest.end()));
@@ -137,8 +136,7 @@ pieces parser::parse_operand(const std::string& context) {
     parse_postfix(out, true);
     return out;
   }
-  bool name = t.is_identifier() && !is_expression_keyword(t.text) && !is_reserved_vv_word(t.text);
-  if (t.is("::") || name) {
+  if (t.is("::") || is_plain_name(t)) {
     if (t.is("::")) out.push_back(token_piece(take()));
     if (!peek().is_identifier()) {
       error(peek(), "expected a name after '::'");
@@ -178,15 +176,7 @@ void parser::parse_postfix(pieces& out, bool allow_property) {
       }
       out.push_back(token_piece(take()));
     } else if (t.kind == tok::dollar && allow_property) {
-      take();
-      if (!peek().is_identifier()) {
-        error(peek(), "expected a property name after '$', found " + found(peek()));
-        return;
-      }
-      piece p;
-      p.kind = piece_kind::property;
-      p.tok = take();
-      out.push_back(std::move(p));
+      if (!parse_property(out)) return;
     } else if (t.is("++") || t.is("--")) {
       out.push_back(token_piece(take()));
     } else if (t.is("<") && out.back().kind == piece_kind::token && out.back().tok->is_identifier()) {
@@ -216,6 +206,20 @@ void parser::parse_postfix(pieces& out, bool allow_property) {
   }
 }
 
+// property = "$" name
+bool parser::parse_property(pieces& out) {
+  take();  // $
+  if (!peek().is_identifier()) {
+    error(peek(), "expected a property name after '$', found " + found(peek()));
+    return false;
+  }
+  piece p;
+  p.kind = piece_kind::property;
+  p.tok = take();
+  out.push_back(std::move(p));
+  return true;
+}
+
 // old-state = "`" ( "`" old-state | path | "(" run ")" postfix* | primary postfix* )
 // with postfix not taking "$": `v$pos is (`v)$pos.
 piece parser::parse_old_state() {
@@ -240,8 +244,7 @@ piece parser::parse_old_state() {
   } else if (t.is("(")) {
     operand.push_back(parse_group(operand, mode::expression));
     parse_postfix(operand, false);
-  } else if ((t.is_identifier() && !is_expression_keyword(t.text) && !is_reserved_vv_word(t.text)) ||
-             t.is("::")) {
+  } else if (is_plain_name(t) || t.is("::")) {
     if (t.is("::")) operand.push_back(token_piece(take()));
     if (peek().is_identifier()) operand.push_back(token_piece(take()));
     parse_postfix(operand, false);
@@ -303,23 +306,18 @@ piece parser::parse_path() {
 
 namespace {
 
-bool is_prefix_operator(const piece& p) {
-  return p.kind == piece_kind::token && p.tok->kind == tok::punct &&
-         (p.tok->text == "!" || p.tok->text == "~" || p.tok->text == "-" || p.tok->text == "+" ||
-          p.tok->text == "*" || p.tok->text == "&" || p.tok->text == "++" || p.tok->text == "--");
-}
+bool is_prefix_operator_piece(const piece& p) { return p.kind == piece_kind::token && is_prefix_operator(*p.tok); }
 
 // Pieces [b, e) form one operand: prefix operators, a primary, postfixes.
 bool is_operand_shape(const pieces& run, std::size_t b, std::size_t e) {
   std::size_t i = b;
-  while (i < e && is_prefix_operator(run[i])) ++i;
+  while (i < e && is_prefix_operator_piece(run[i])) ++i;
   if (i == e) return false;
   const piece& first = run[i];
   if (first.kind == piece_kind::token) {
     const token& t = *first.tok;
     if (t.is("::") && i + 1 < e && run[i + 1].kind == piece_kind::token && run[i + 1].tok->is_identifier()) ++i;
-    else if (!(t.kind == tok::number || t.kind == tok::string || t.kind == tok::character ||
-               (t.is_identifier() && !is_expression_keyword(t.text) && !is_reserved_vv_word(t.text))))
+    else if (!(t.kind == tok::number || t.kind == tok::string || t.kind == tok::character || is_plain_name(t)))
       return false;
   } else if (first.kind == piece_kind::group) {
     if (!first.tok->is("(")) return false;
