@@ -2,7 +2,7 @@
 
 #include <unordered_set>
 
-#include "words.hpp"
+#include "keywords.hpp"
 #include "writer.hpp"
 
 namespace vvc {

@@ -8,9 +8,10 @@
 //    and C++ declarations (whose function and class bodies it enters);
 //  * statements in bodies: compound, if, while, do, for, switch, try,
 //    labels, the vv statements, and anything else up to its `;`;
-//  * inside those, "runs" of tokens in which groups ( [ { are balanced and
-//    the vv expressions are recognised where they start: a vv keyword, a
-//    backtick, `$`, `@`, or a parenthesised `(X ^ Y)` / `(X | Y)`.
+//  * inside those, balanced token sequences (C++'s balanced-token-seq), in
+//    which groups ( [ { nest and the vv expressions are recognised where
+//    they start: a vv keyword, a backtick, `$`, `@`, or a parenthesised
+//    `(X ^ Y)` / `(X | Y)`.
 //
 // vv expression operands are unary expressions (like the operand of
 // sizeof): `nextto b in c$x` takes `c$x`, and `a + nextto b in c` adds.
@@ -19,7 +20,17 @@
 // Rules that decide between vv and C++ look only at tokens, never at names
 // a program chose: a vv word is a keyword where the vv form it starts is
 // complete (`next(i)to`, `any in`, `is X in`, `erase X from`), and C++
-// otherwise (a call `next(i)`, a variable `any`).
+// otherwise (a call `next(i)`, a variable `any`). What each word is lives
+// in one table (keywords.hpp).
+//
+// There is one grammar. Where a form is known only once part of it is read
+// (`is X in`: is X followed by `in`?), the parser looks ahead by parsing:
+// it remembers the cursor, parses X with diagnostics held back, looks at
+// the next token and returns to where it was (looks_ahead). The parser
+// keeps all its state in the cursor, so going back costs nothing. Each
+// answer is kept per token, so a lookahead nested in another (is (is (...
+// in b) in b) is tried once: the work stays within the nesting limit times
+// the input. Recursion is bounded by max_nesting, speculative or not.
 //
 // Each parse function documents its grammar in the comment above it.
 #pragma once
@@ -69,16 +80,16 @@ class parser {
   template <class Attempt>
   bool looks_ahead(Attempt attempt);
 
-  // ---- runs of tokens (parser_runs.cpp) ----
+  // ---- balanced token sequences (parser_balanced.cpp) ----
   enum class mode {
     expression,   // a statement or initializer: lambdas have bodies
     declaration,  // namespace or class scope: function bodies too
   };
-  //! run = { group | vv-construct | token } up to one of `stops` at depth 0
+  //! balanced = { group | vv-construct | token } up to one of `stops` at depth 0
   //! (or, with `declaration_ends`, just after a function or namespace body)
-  pieces parse_run(std::initializer_list<std::string_view> stops, mode m,
+  pieces parse_balanced(std::initializer_list<std::string_view> stops, mode m,
                    bool declaration_ends = false);
-  //! group = "(" run ")" | "[" run "]" | "{" run "}" | body | class-body
+  //! group = "(" balanced ")" | "[" balanced "]" | "{" balanced "}" | body | class-body
   piece parse_group(const pieces& before, mode m);
   bool starts_lambda_body(const pieces& before) const;
   bool starts_function_body(const pieces& before) const;
@@ -91,10 +102,13 @@ class parser {
   //! operand = prefix-op operand | vv-expression | "`" postfix | path | primary postfix*
   pieces parse_operand(const std::string& context);
   bool starts_operand(const token& t) const;
-  //! postfix = "(" run ")" | "[" run "]" | "." name | "->" name | "::" name | "$" name | "++" | "--"
+  //! postfix = "(" balanced ")" | "[" balanced "]" | "." name | "->" name | "::" name | "$" name | "++" | "--"
   void parse_postfix(pieces& out, bool allow_property);
   //! property = "$" name, appended to `out`; false after an error.
   bool parse_property(pieces& out);
+  //! Template arguments after a name, appended to `out`; false (nothing
+  //! taken) when the `<` is a comparison.
+  bool parse_template_arguments(pieces& out);
   piece parse_old_state();
   void refuse_writing_the_old_state(const pieces& out, const token& op);
   piece parse_path();

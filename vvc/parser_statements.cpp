@@ -2,7 +2,7 @@
 #include <iterator>
 
 #include "parser.hpp"
-#include "words.hpp"
+#include "keywords.hpp"
 
 namespace vvc {
 
@@ -40,12 +40,12 @@ stmt_ptr parser::parse_compound() {
 }
 
 // statement = compound | ";" | preprocessor-line
-//           | "if" ["constexpr"] "(" run ")" statement ["else" statement]
-//           | "while" "(" run ")" statement | "do" statement "while" "(" run ")" ";"
-//           | "for" "(" run ")" statement | "switch" "(" run ")" statement
-//           | "try" compound { "catch" "(" run ")" compound }
-//           | ("case" run | "default" | name) ":"
-//           | forall | edit | vertex-declaration | run ";"
+//           | "if" ["constexpr"] "(" balanced ")" statement ["else" statement]
+//           | "while" "(" balanced ")" statement | "do" statement "while" "(" balanced ")" ";"
+//           | "for" "(" balanced ")" statement | "switch" "(" balanced ")" statement
+//           | "try" compound { "catch" "(" balanced ")" compound }
+//           | ("case" balanced | "default" | name) ":"
+//           | forall | edit | vertex-declaration | balanced ";"
 stmt_ptr parser::parse_statement() {
   nesting_guard guard(*this);
   if (!guard.ok()) return make_stmt(stmt_kind::empty, &peek());
@@ -110,7 +110,7 @@ stmt_ptr parser::parse_statement() {
     }
     if (w == "case" || w == "default" || (peek(1).is(":") && is_plain_name(t))) {
       auto s = make_stmt(stmt_kind::label, &t);
-      s->head = parse_run({":"}, mode::expression);
+      s->head = parse_balanced({":"}, mode::expression);
       if (const token* colon = expect(":", "after the label")) s->head.push_back(token_piece(colon));
       return s;
     }
@@ -130,10 +130,10 @@ stmt_ptr parser::parse_statement() {
   return parse_simple();
 }
 
-// simple = run ";"
+// simple = balanced ";"
 stmt_ptr parser::parse_simple() {
   auto s = make_stmt(stmt_kind::simple, &peek());
-  s->head = parse_run({";"}, mode::expression);
+  s->head = parse_balanced({";"}, mode::expression);
   if (at_end()) return s;  // inside an unterminated block, which reports itself
   s->end = expect(";", "at the end of the statement");
   if (!s->end) recover();
@@ -161,7 +161,7 @@ bool parser::edit_follows() {
   return starts_operand(next) && (!is_prefix_operator(next) || next.is("!") || next.is("~"));
 }
 
-// edit = "make" "{" run {"," run} "}" "nb_of" operand ";"
+// edit = "make" "{" balanced {"," balanced} "}" "nb_of" operand ";"
 //      | "erase" ("flag" | operand) "from" operand ";"
 //      | "replace" ("flag" | operand) "with" operand "in" operand ";"
 //      | "splice" operand ("after" | "before") ("flag" | operand) "in" operand ";"
@@ -186,7 +186,7 @@ bool parser::parse_edit(stmt& s) {
     const token* open = take();
     std::vector<pieces> list;
     while (!at("}") && !at_end()) {
-      list.push_back(parse_run({",", "nb_of", ";"}, mode::expression));
+      list.push_back(parse_balanced({",", "nb_of", ";"}, mode::expression));
       if (list.back().empty()) error(peek(), "expected a vertex in the list of 'make'");
       if (!accept(",")) break;
     }
@@ -277,9 +277,9 @@ stmt_ptr parser::parse_forall() {
 
 // vertex-declaration = "vertex" declarator {"," declarator} ";"
 // declarator = name                      (creates a vertex)
-//            | name "(" [run {"," run}] ")" | name "{" ... "}"   (with properties)
-//            | name "=" run              (a reference)
-//            | name "[" ... run          (an array of null handles, as in C++)
+//            | name "(" [balanced {"," balanced}] ")" | name "{" ... "}"   (with properties)
+//            | name "=" balanced              (a reference)
+//            | name "[" ... balanced          (an array of null handles, as in C++)
 bool parser::parse_vertex_declaration(stmt& s) {
   take();  // vertex
   while (true) {
@@ -294,7 +294,7 @@ bool parser::parse_vertex_declaration(stmt& s) {
       std::string_view close = open->is("(") ? ")" : "}";
       d.how = vertex_declarator::create_with;
       while (!at(close) && !at_end()) {
-        d.args.push_back(parse_run({","}, mode::expression));
+        d.args.push_back(parse_balanced({","}, mode::expression));
         if (d.args.back().empty()) error(peek(), "expected an initial property value");
         if (!accept(",")) break;
       }
@@ -303,11 +303,11 @@ bool parser::parse_vertex_declaration(stmt& s) {
       if (d.args.empty()) d.how = vertex_declarator::create;
     } else if (accept("=")) {
       d.how = vertex_declarator::reference;
-      d.args.push_back(parse_run({",", ";"}, mode::expression));
+      d.args.push_back(parse_balanced({",", ";"}, mode::expression));
       if (d.args[0].empty()) error(peek(), "expected an initial value after '='");
     } else if (at("[")) {
       d.how = vertex_declarator::plain;
-      d.args.push_back(parse_run({",", ";"}, mode::expression));
+      d.args.push_back(parse_balanced({",", ";"}, mode::expression));
     } else if (!at(",") && !at(";")) {
       error(peek(), "expected ';', ',', '(' or '=' after the vertex '" + std::string(d.name->text) + "'");
       return false;

@@ -1,6 +1,6 @@
 // The top level: property blocks, execution blocks, C++ declarations.
 #include "parser.hpp"
-#include "words.hpp"
+#include "keywords.hpp"
 
 namespace vvc {
 
@@ -62,7 +62,7 @@ void parser::parse_property_block(program& p) {
                           " block must come before any other use of '" + std::string(used->text) +
                           "' (used at line " + std::to_string(used->line) + ")");
   b.open = take();
-  b.members = parse_run({}, mode::declaration);
+  b.members = parse_balanced({}, mode::declaration);
   if (at("}")) {
     b.close = take();
   } else {
@@ -103,7 +103,7 @@ bool parser::starts_parameter() const {
   return false;
 }
 
-// parameter = "param" type name "=" run ["in" "[" run "," run "]"] ";"
+// parameter = "param" type name "=" balanced ["in" "[" balanced "," balanced "]"] ";"
 void parser::parse_parameter(program& p) {
   parameter d;
   d.keyword = take();
@@ -116,13 +116,13 @@ void parser::parse_parameter(program& p) {
   std::string of = " of parameter " + std::string(d.name->text);
   expect("=", "after the name" + of + " (a parameter needs a value: param " + std::string(d.type->text) + " " +
                   std::string(d.name->text) + " = VALUE;)");
-  d.value = parse_run({";", "in"}, mode::expression);
+  d.value = parse_balanced({";", "in"}, mode::expression);
   if (d.value.empty()) error(peek(), "expected the value" + of);
   if (accept("in")) {
     expect("[", "after 'in' (a range is written in [LO, HI])");
-    d.lo = parse_run({","}, mode::expression);
+    d.lo = parse_balanced({","}, mode::expression);
     expect(",", "between the ends of the range" + of);
-    d.hi = parse_run({}, mode::expression);
+    d.hi = parse_balanced({}, mode::expression);
     expect("]", "after the range" + of);
     if (d.lo.empty() || d.hi.empty()) error(*d.name, "the range" + of + " needs both ends: in [LO, HI]");
     if (d.type->is_word("bool")) error(*d.name, "a bool parameter has no range");
@@ -136,7 +136,7 @@ void parser::parse_parameter(program& p) {
   p.items.push_back(std::move(item));
 }
 
-// declaration = run (";" | ending in a function or namespace body)
+// declaration = balanced (";" | ending in a function or namespace body)
 void parser::parse_top_declaration(program& p) {
   std::size_t start = pos_;
   const token& first = peek();
@@ -148,7 +148,7 @@ void parser::parse_top_declaration(program& p) {
                        " = 0;' here and create the vertex in an execution block");
   top_item item;
   item.tok = &first;
-  item.cxx = parse_run({";"}, mode::declaration, true);
+  item.cxx = parse_balanced({";"}, mode::declaration, true);
   bool ends_with_body = !item.cxx.empty() && (item.cxx.back().kind == piece_kind::body ||
                                               (item.cxx.back().kind == piece_kind::group &&
                                                item.cxx.back().tok->is("{")));

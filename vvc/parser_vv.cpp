@@ -5,7 +5,7 @@
 #include <string>
 
 #include "parser.hpp"
-#include "words.hpp"
+#include "keywords.hpp"
 
 namespace vvc {
 
@@ -60,7 +60,7 @@ bool parser::parse_vv_expression(pieces& out) {
 }
 
 // query = ("nextto" | "prevto") ("flag" | operand) "in" operand
-//       | ("next" | "prev") "(" run ")" "to" operand "in" operand
+//       | ("next" | "prev") "(" balanced ")" "to" operand "in" operand
 //       | ("any" | "flagged") "in" operand
 //       | ("valence" | "labelof") operand
 //       | "is" operand "in" operand
@@ -93,7 +93,7 @@ piece parser::parse_query() {
   } else if (w == "next" || w == "prev") {
     p.query = w == "next" ? query_kind::next_i_to : query_kind::prev_i_to;
     take();  // (
-    pieces count = parse_run({}, mode::expression);
+    pieces count = parse_balanced({}, mode::expression);
     if (count.empty()) error(peek(), "expected the number of steps in '" + w + "(...)to'");
     expect(")", "after the number of steps");
     expect("to", "after '" + w + "(...)'");
@@ -113,7 +113,7 @@ piece parser::parse_query() {
   return p;
 }
 
-// operand = prefix-op operand | vv-expression postfix* | "(" run ")" postfix*
+// operand = prefix-op operand | vv-expression postfix* | "(" balanced ")" postfix*
 //         | primary postfix*
 // primary = ["::"] name {"::" name} [template-arguments] | literal {literal}
 pieces parser::parse_operand(const std::string& context) {
@@ -159,8 +159,8 @@ pieces parser::parse_operand(const std::string& context) {
   return out;
 }
 
-// postfix = "(" run ")" | "[" run "]" | ("." | "->" | "::") name
-//         | "$" name | "++" | "--" | template-arguments "(" run ")"
+// postfix = "(" balanced ")" | "[" balanced "]" | ("." | "->" | "::") name
+//         | "$" name | "++" | "--" | template-arguments "(" balanced ")"
 void parser::parse_postfix(pieces& out, bool allow_property) {
   while (!at_end()) {
     const token& t = peek();
@@ -180,26 +180,7 @@ void parser::parse_postfix(pieces& out, bool allow_property) {
     } else if (t.is("++") || t.is("--")) {
       out.push_back(token_piece(take()));
     } else if (t.is("<") && out.back().kind == piece_kind::token && out.back().tok->is_identifier()) {
-      // Template arguments, when a call or scope follows them: f<int>(x).
-      std::size_t k = pos_;
-      int angle = 0, paren = 0;
-      for (; k < toks_.size(); ++k) {
-        const token& u = toks_[k];
-        if (u.is("(") || u.is("[")) ++paren;
-        else if (u.is(")") || u.is("]")) --paren;
-        else if (paren == 0 && u.is("<")) ++angle;
-        else if (paren == 0 && u.is(">")) --angle;
-        else if (paren == 0 && u.is(">>")) angle -= 2;
-        if (paren < 0 || u.is(";") || u.is("{") || u.is("}") || u.kind == tok::eof) return;
-        if (angle <= 0) break;
-      }
-      if (angle != 0 || k + 1 >= toks_.size() ||
-          !(toks_[k + 1].is("(") || toks_[k + 1].is("::") || toks_[k + 1].is("{")))
-        return;
-      while (pos_ <= k) {
-        if (peek().is("(") || peek().is("[")) out.push_back(parse_group(out, mode::expression));
-        else out.push_back(token_piece(take()));
-      }
+      if (!parse_template_arguments(out)) return;
     } else {
       return;
     }
@@ -220,7 +201,32 @@ bool parser::parse_property(pieces& out) {
   return true;
 }
 
-// old-state = "`" ( "`" old-state | path | "(" run ")" postfix* | primary postfix* )
+// template-arguments = "<" ... ">" when "(" "::" or "{" follows the ">":
+// f<int>(x). Angle brackets are no groups, so this counts them over tokens.
+bool parser::parse_template_arguments(pieces& out) {
+  std::size_t k = pos_;
+  int angle = 0, paren = 0;
+  for (; k < toks_.size(); ++k) {
+    const token& u = toks_[k];
+    if (u.is("(") || u.is("[")) ++paren;
+    else if (u.is(")") || u.is("]")) --paren;
+    else if (paren == 0 && u.is("<")) ++angle;
+    else if (paren == 0 && u.is(">")) --angle;
+    else if (paren == 0 && u.is(">>")) angle -= 2;
+    if (paren < 0 || u.is(";") || u.is("{") || u.is("}") || u.kind == tok::eof) return false;
+    if (angle <= 0) break;
+  }
+  if (angle != 0 || k + 1 >= toks_.size() ||
+      !(toks_[k + 1].is("(") || toks_[k + 1].is("::") || toks_[k + 1].is("{")))
+    return false;
+  while (pos_ <= k) {
+    if (peek().is("(") || peek().is("[")) out.push_back(parse_group(out, mode::expression));
+    else out.push_back(token_piece(take()));
+  }
+  return true;
+}
+
+// old-state = "`" ( "`" old-state | path | "(" balanced ")" postfix* | primary postfix* )
 // with postfix not taking "$": `v$pos is (`v)$pos.
 piece parser::parse_old_state() {
   nesting_guard guard(*this);
@@ -255,7 +261,7 @@ piece parser::parse_old_state() {
   return p;
 }
 
-// path = "@" ["&"] "(" run "," run ")" { ("next" | "prev" | "swap") [","] } "@"
+// path = "@" ["&"] "(" balanced "," balanced ")" { ("next" | "prev" | "swap") [","] } "@"
 piece parser::parse_path() {
   piece p;
   p.kind = piece_kind::path;
@@ -271,9 +277,9 @@ piece parser::parse_path() {
     return p;
   }
   take();
-  p.parts.push_back(parse_run({","}, mode::expression));
+  p.parts.push_back(parse_balanced({","}, mode::expression));
   expect(",", "between the two vertices of a path");
-  p.parts.push_back(parse_run({","}, mode::expression));
+  p.parts.push_back(parse_balanced({","}, mode::expression));
   expect(")", "after the two vertices of a path");
   if (p.assign)
     for (const pieces& v : p.parts)

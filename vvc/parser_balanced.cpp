@@ -1,6 +1,6 @@
-// Runs of tokens and the groups in them.
+// Balanced token sequences and the groups in them.
 #include "parser.hpp"
-#include "words.hpp"
+#include "keywords.hpp"
 
 namespace vvc {
 
@@ -75,9 +75,9 @@ void parser::refuse_writing_the_old_state(const pieces& out, const token& op) {
                          " is read-only: it is what the vertex was at 'synchronise'");
 }
 
-// run = { group | vv-expression | "$" name | token } up to a stop token (or
+// balanced = { group | vv-expression | "$" name | token } up to a stop token (or
 // a closer) at this depth; neither is consumed.
-pieces parser::parse_run(std::initializer_list<std::string_view> stops, mode m,
+pieces parser::parse_balanced(std::initializer_list<std::string_view> stops, mode m,
                          bool declaration_ends) {
   pieces out;
   while (!at_end() && !diag_.saturated()) {
@@ -108,7 +108,7 @@ pieces parser::parse_run(std::initializer_list<std::string_view> stops, mode m,
   return out;
 }
 
-// group = "(" run ")" | "[" run "]" | "{" run "}"
+// group = "(" balanced ")" | "[" balanced "]" | "{" balanced "}"
 //       | "{" statements "}"   (a function or lambda body)
 //       | "{" declarations "}" (a class or namespace body)
 // A `(` that is no call may hold an edge access (X ^ Y) or (X | Y).
@@ -136,7 +136,7 @@ piece parser::parse_group(const pieces& before, mode m) {
       inner = mode::declaration;
     }
   }
-  if (p.kind != piece_kind::body) p.parts.push_back(parse_run({}, inner));
+  if (p.kind != piece_kind::body) p.parts.push_back(parse_balanced({}, inner));
   std::string_view want = closer_of(p.tok->text);
   if (peek().is(want)) {
     p.close = take();

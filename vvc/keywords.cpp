@@ -1,4 +1,4 @@
-#include "words.hpp"
+#include "keywords.hpp"
 
 #include <algorithm>
 #include <array>
