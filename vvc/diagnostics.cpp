@@ -9,6 +9,10 @@ void diagnostics::error(const token& at, std::string message) {
 }
 
 void diagnostics::error(const source_file* file, int line, int col, std::string message) {
+  if (!held_from_.empty()) {
+    ++held_;
+    return;
+  }
   if (saturated()) return;
   // The same place twice means recovery went round once more: keep one.
   for (const auto& d : list_)

@@ -28,6 +28,17 @@ class diagnostics {
   //! Too many errors: later ones are dropped and translation gives up.
   bool saturated() const { return list_.size() >= limit; }
 
+  //! Speculative parsing (lookahead by parsing): between hold() and
+  //! release(), errors are counted, not kept. release() says whether any
+  //! came. Holds nest.
+  void hold() { held_from_.push_back(held_); }
+  bool release() {
+    bool any = held_ > held_from_.back();
+    held_from_.pop_back();
+    if (held_from_.empty()) held_ = 0;
+    return any;
+  }
+
   static constexpr std::size_t limit = 25;
 
  private:
@@ -36,6 +47,8 @@ class diagnostics {
   // unterminated block is noticed at the end of the file).
   std::size_t file_rank(const source_file* f);
   std::vector<diagnostic> list_;
+  std::size_t held_ = 0;                // errors since the outermost hold()
+  std::vector<std::size_t> held_from_;  // held_ at each open hold()
   std::vector<const source_file*> files_;
 };
 

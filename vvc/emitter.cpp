@@ -2,6 +2,7 @@
 
 #include <unordered_set>
 
+#include "keywords.hpp"
 #include "writer.hpp"
 
 namespace vvc {
@@ -185,11 +186,11 @@ class emitter {
     s += "VV_PLUGIN_EXPORT int vv_plugin_abi_version() { return VV_PLUGIN_ABI_VERSION; }\n";
     s += "VV_PLUGIN_EXPORT void vv_plugin_configure(const vv_plugin_settings* vv_settings) {\n"
          "  vv::plugin::configure(vv_model, *vv_settings, " + cpp_string_literal(o_.source_dir) + ");\n}\n";
-    static const char* const names[] = {"start", "step", "end", "close", "render_init", "render", "render_screen"};
     std::string present;
-    for (const char* name : names) {
+    for (std::string_view name_view : execution_block_names()) {
+      std::string name(name_view);
       bool has = false;
-      for (const std::string& b : p_.blocks) has = has || b == name;
+      for (const top_item& it : p_.items) has = has || (it.kind == top_item::block && it.block_name->text == name);
       s += std::string("VV_PLUGIN_EXPORT const char* vv_plugin_") + name + "() { ";
       if (has) {
         s += std::string("return vv::plugin::guarded(vv_exchange, vv_block_") + name + "); }\n";

@@ -8,9 +8,10 @@
 //    and C++ declarations (whose function and class bodies it enters);
 //  * statements in bodies: compound, if, while, do, for, switch, try,
 //    labels, the vv statements, and anything else up to its `;`;
-//  * inside those, "runs" of tokens in which groups ( [ { are balanced and
-//    the vv expressions are recognised where they start: a vv keyword, a
-//    backtick, `$`, `@`, or a parenthesised `(X ^ Y)` / `(X | Y)`.
+//  * inside those, balanced token sequences (C++'s balanced-token-seq), in
+//    which groups ( [ { nest and the vv expressions are recognised where
+//    they start: a vv keyword, a backtick, `$`, `@`, or a parenthesised
+//    `(X ^ Y)` / `(X | Y)`.
 //
 // vv expression operands are unary expressions (like the operand of
 // sizeof): `nextto b in c$x` takes `c$x`, and `a + nextto b in c` adds.
@@ -19,7 +20,17 @@
 // Rules that decide between vv and C++ look only at tokens, never at names
 // a program chose: a vv word is a keyword where the vv form it starts is
 // complete (`next(i)to`, `any in`, `is X in`, `erase X from`), and C++
-// otherwise (a call `next(i)`, a variable `any`).
+// otherwise (a call `next(i)`, a variable `any`). What each word is lives
+// in one table (keywords.hpp).
+//
+// There is one grammar. Where a form is known only once part of it is read
+// (`is X in`: is X followed by `in`?), the parser looks ahead by parsing:
+// it remembers the cursor, parses X with diagnostics held back, looks at
+// the next token and returns to where it was (looks_ahead). The parser
+// keeps all its state in the cursor, so going back costs nothing. Each
+// answer is kept per token, so a lookahead nested in another (is (is (...
+// in b) in b) is tried once: the work stays within the nesting limit times
+// the input. Recursion is bounded by max_nesting, speculative or not.
 //
 // Each parse function documents its grammar in the comment above it.
 #pragma once
@@ -35,7 +46,8 @@ namespace vvc {
 
 class parser {
  public:
-  parser(const std::vector<token>& tokens, diagnostics& diag) : toks_(tokens), diag_(diag) {}
+  parser(const std::vector<token>& tokens, diagnostics& diag)
+      : toks_(tokens), diag_(diag), looked_ahead_(tokens.size(), unknown) {}
   program parse_program();
 
  private:
@@ -58,16 +70,26 @@ class parser {
   //! Skips to just after the next ; or to a } that closes the statement.
   void recover();
 
-  // ---- runs of tokens (parser_runs.cpp) ----
+  // ---- lookahead by parsing ----
+  //! Whether the vv form that would start at the cursor is there: runs
+  //! `attempt` (which parses part of the form and says whether what
+  //! follows fits) with diagnostics held back, then returns to the cursor.
+  //! A form nested too deeply to parse counts as there: the real parse
+  //! then takes the same path and reports the depth. Answers are kept per
+  //! position, so nested lookaheads try each position once.
+  template <class Attempt>
+  bool looks_ahead(Attempt attempt);
+
+  // ---- balanced token sequences (parser_balanced.cpp) ----
   enum class mode {
     expression,   // a statement or initializer: lambdas have bodies
     declaration,  // namespace or class scope: function bodies too
   };
-  //! run = { group | vv-construct | token } up to one of `stops` at depth 0
+  //! balanced = { group | vv-construct | token } up to one of `stops` at depth 0
   //! (or, with `declaration_ends`, just after a function or namespace body)
-  pieces parse_run(std::initializer_list<std::string_view> stops, mode m,
+  pieces parse_balanced(std::initializer_list<std::string_view> stops, mode m,
                    bool declaration_ends = false);
-  //! group = "(" run ")" | "[" run "]" | "{" run "}" | body | class-body
+  //! group = "(" balanced ")" | "[" balanced "]" | "{" balanced "}" | body | class-body
   piece parse_group(const pieces& before, mode m);
   bool starts_lambda_body(const pieces& before) const;
   bool starts_function_body(const pieces& before) const;
@@ -80,8 +102,13 @@ class parser {
   //! operand = prefix-op operand | vv-expression | "`" postfix | path | primary postfix*
   pieces parse_operand(const std::string& context);
   bool starts_operand(const token& t) const;
-  //! postfix = "(" run ")" | "[" run "]" | "." name | "->" name | "::" name | "$" name | "++" | "--"
+  //! postfix = "(" balanced ")" | "[" balanced "]" | "." name | "->" name | "::" name | "$" name | "++" | "--"
   void parse_postfix(pieces& out, bool allow_property);
+  //! property = "$" name, appended to `out`; false after an error.
+  bool parse_property(pieces& out);
+  //! Template arguments after a name, appended to `out`; false (nothing
+  //! taken) when the `<` is a comparison.
+  bool parse_template_arguments(pieces& out);
   piece parse_old_state();
   void refuse_writing_the_old_state(const pieces& out, const token& op);
   piece parse_path();
@@ -89,16 +116,13 @@ class parser {
   //! Turns a parenthesised group that holds exactly `operand ^ operand`
   //! (or `|`) into an edge access.
   static void as_edge_access(piece& group);
-  //! The index just after the operand starting at token i (npos if none),
-  //! found by scanning tokens: decides `is X in V` without backtracking.
-  std::size_t scan_operand(std::size_t i, int depth = 0) const;
 
   // ---- statements (parser_statements.cpp) ----
   stmt_ptr parse_statement();
   stmt_ptr parse_compound();
   stmt_ptr parse_simple();
   bool parse_edit(stmt& s);
-  bool edit_follows() const;
+  bool edit_follows();
   stmt_ptr parse_forall();
   bool parse_vertex_declaration(stmt& s);
   stmt_ptr parse_body_statements(const token* open);
@@ -111,12 +135,10 @@ class parser {
   bool starts_parameter() const;
   void parse_parameter(program& p);
   void analyse_fields(property_block& block);
-  void note_uses(const pieces& run);
 
   const std::vector<token>& toks_;
   diagnostics& diag_;
   std::size_t pos_ = 0;
-  int depth_ = 0;             // nesting of bodies (0: top level)
   int nesting_ = 0;           // groups, operands and statements open now
   bool gave_up_ = false;      // nested past max_nesting: the rest is not parsed
   //! Guards recursion: past max_nesting the input is given up on (with an
@@ -137,6 +159,24 @@ class parser {
     bool ok_;
   };
   const token* first_use_[3] = {nullptr, nullptr, nullptr};  // edge, vertex, mesh outside blocks
+  enum : signed char { unknown, there, not_there };
+  std::vector<signed char> looked_ahead_;  // per token: the answer of looks_ahead there
 };
+
+template <class Attempt>
+bool parser::looks_ahead(Attempt attempt) {
+  if (looked_ahead_[pos_] != unknown) return looked_ahead_[pos_] == there;
+  const std::size_t start = pos_;
+  const bool gave_up = gave_up_;
+  diag_.hold();
+  bool fits = attempt();
+  bool errors = diag_.release();
+  bool too_deep = gave_up_ && !gave_up;
+  pos_ = start;
+  gave_up_ = gave_up;
+  bool answer = too_deep || (fits && !errors);
+  looked_ahead_[start] = answer ? there : not_there;
+  return answer;
+}
 
 }  // namespace vvc

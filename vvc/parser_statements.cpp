@@ -2,7 +2,7 @@
 #include <iterator>
 
 #include "parser.hpp"
-#include "words.hpp"
+#include "keywords.hpp"
 
 namespace vvc {
 
@@ -13,23 +13,6 @@ stmt_ptr make_stmt(stmt_kind k, const token* t) {
   s->kind = k;
   s->tok = t;
   return s;
-}
-
-// The keyword that must follow the first operand of each edit, which tells
-// an edit from a C++ call of a function that happens to share its name.
-std::string_view continuation_of(std::string_view edit) {
-  if (edit == "erase" || edit == "remove") return "from";
-  if (edit == "replace" || edit == "merge") return "with";
-  if (edit == "flag") return "in";
-  if (edit == "add") return "to";
-  if (edit == "clear") return ";";
-  return "";
-}
-
-bool is_edit_word(std::string_view w) {
-  return w == "make" || w == "erase" || w == "replace" || w == "splice" || w == "flag" ||
-         w == "add" || w == "remove" || w == "merge" || w == "clear" || w == "synchronise" ||
-         w == "synchronize";
 }
 
 }  // namespace
@@ -49,9 +32,7 @@ void parser::body_statements(stmt_list& out) {
 // compound = "{" statements "}"
 stmt_ptr parser::parse_compound() {
   auto s = make_stmt(stmt_kind::compound, take());
-  ++depth_;
   body_statements(s->children);
-  --depth_;
   if (at("}")) s->end = take();
   else
     error(*s->tok, "unterminated block: this '{' has no matching '}'");
@@ -59,12 +40,12 @@ stmt_ptr parser::parse_compound() {
 }
 
 // statement = compound | ";" | preprocessor-line
-//           | "if" ["constexpr"] "(" run ")" statement ["else" statement]
-//           | "while" "(" run ")" statement | "do" statement "while" "(" run ")" ";"
-//           | "for" "(" run ")" statement | "switch" "(" run ")" statement
-//           | "try" compound { "catch" "(" run ")" compound }
-//           | ("case" run | "default" | name) ":"
-//           | forall | edit | vertex-declaration | run ";"
+//           | "if" ["constexpr"] "(" balanced ")" statement ["else" statement]
+//           | "while" "(" balanced ")" statement | "do" statement "while" "(" balanced ")" ";"
+//           | "for" "(" balanced ")" statement | "switch" "(" balanced ")" statement
+//           | "try" compound { "catch" "(" balanced ")" compound }
+//           | ("case" balanced | "default" | name) ":"
+//           | forall | edit | vertex-declaration | balanced ";"
 stmt_ptr parser::parse_statement() {
   nesting_guard guard(*this);
   if (!guard.ok()) return make_stmt(stmt_kind::empty, &peek());
@@ -127,15 +108,14 @@ stmt_ptr parser::parse_statement() {
       }
       return s;
     }
-    if (w == "case" || w == "default" || (peek(1).is(":") && !is_reserved_vv_word(w) &&
-                                          !is_expression_keyword(w))) {
+    if (w == "case" || w == "default" || (peek(1).is(":") && is_plain_name(t))) {
       auto s = make_stmt(stmt_kind::label, &t);
-      s->head = parse_run({":"}, mode::expression);
+      s->head = parse_balanced({":"}, mode::expression);
       if (const token* colon = expect(":", "after the label")) s->head.push_back(token_piece(colon));
       return s;
     }
     if (w == "forall") return parse_forall();
-    if (is_edit_word(w) && edit_follows()) {
+    if (has_role(w, word_role::edit) && edit_follows()) {
       auto s = make_stmt(stmt_kind::edit, &t);
       if (!parse_edit(*s)) recover();
       return s;
@@ -150,10 +130,10 @@ stmt_ptr parser::parse_statement() {
   return parse_simple();
 }
 
-// simple = run ";"
+// simple = balanced ";"
 stmt_ptr parser::parse_simple() {
   auto s = make_stmt(stmt_kind::simple, &peek());
-  s->head = parse_run({";"}, mode::expression);
+  s->head = parse_balanced({";"}, mode::expression);
   if (at_end()) return s;  // inside an unterminated block, which reports itself
   s->end = expect(";", "at the end of the statement");
   if (!s->end) recover();
@@ -163,33 +143,25 @@ stmt_ptr parser::parse_simple() {
 // A vv edit starts here (not a C++ use of the same word): the word is
 // followed by an operand, and, when that operand is parenthesised, by the
 // edit's next keyword (`erase (x) from v;` but `erase(x);` is a call).
-bool parser::edit_follows() const {
-  std::string_view w = peek().text;
-  if (w == "synchronise" || w == "synchronize") return true;
+bool parser::edit_follows() {
+  const vv_word& edit = *find_word(peek().text, word_role::edit);
+  if (edit.reserved) return true;  // synchronise
+  auto continues_at = [&](const token& t) { return t.is(edit.then) || (!edit.or_then.empty() && t.is(edit.or_then)); };
   const token& next = peek(1);
-  if (w == "make") return next.is("{") || next.is_word("nb_of");
+  if (edit.text == "make") return next.is("{") || next.is_word("nb_of");
   // The operand is missing but the edit's next word is there: `add to M;`.
-  if (next.is_word(continuation_of(w)) || (w == "splice" && (next.is_word("after") || next.is_word("before"))))
-    return true;
-  if (next.is("(")) {
-    int depth = 0;
-    for (std::size_t k = pos_ + 1; k < toks_.size(); ++k) {
-      if (toks_[k].is("(")) ++depth;
-      if (toks_[k].is(")") && --depth == 0) {
-        if (k + 1 >= toks_.size()) return false;
-        const token& after = toks_[k + 1];
-        return w == "splice" ? after.is_word("after") || after.is_word("before")
-                             : after.is(continuation_of(w));
-      }
-      if (toks_[k].kind == tok::eof) return false;
-    }
-    return false;
-  }
-  return starts_operand(next) && !next.is("*") && !next.is("&") && !next.is("-") &&
-         !next.is("+") && !next.is("++") && !next.is("--");
+  if (next.is_identifier() && continues_at(next)) return true;
+  if (next.is("("))
+    return looks_ahead([&] {
+      take();
+      parse_group({}, mode::expression);
+      return continues_at(peek());
+    });
+  // `erase * x` and `erase - x` are arithmetic on a variable `erase`.
+  return starts_operand(next) && (!is_prefix_operator(next) || next.is("!") || next.is("~"));
 }
 
-// edit = "make" "{" run {"," run} "}" "nb_of" operand ";"
+// edit = "make" "{" balanced {"," balanced} "}" "nb_of" operand ";"
 //      | "erase" ("flag" | operand) "from" operand ";"
 //      | "replace" ("flag" | operand) "with" operand "in" operand ";"
 //      | "splice" operand ("after" | "before") ("flag" | operand) "in" operand ";"
@@ -214,7 +186,7 @@ bool parser::parse_edit(stmt& s) {
     const token* open = take();
     std::vector<pieces> list;
     while (!at("}") && !at_end()) {
-      list.push_back(parse_run({",", "nb_of", ";"}, mode::expression));
+      list.push_back(parse_balanced({",", "nb_of", ";"}, mode::expression));
       if (list.back().empty()) error(peek(), "expected a vertex in the list of 'make'");
       if (!accept(",")) break;
     }
@@ -272,7 +244,7 @@ bool parser::parse_edit(stmt& s) {
   } else if (w == "flag" || w == "add" || w == "remove" || w == "merge") {
     s.edit = w == "flag" ? edit_kind::flag : w == "add" ? edit_kind::add
              : w == "remove" ? edit_kind::remove : edit_kind::merge;
-    std::string_view next = continuation_of(w);
+    std::string_view next = find_word(w, word_role::edit)->then;
     operand("after '" + w + "'");
     ok = word(next, "in '" + w + " ... " + std::string(next) + " ...'");
     if (ok) operand("after '" + std::string(next) + "'");
@@ -305,9 +277,9 @@ stmt_ptr parser::parse_forall() {
 
 // vertex-declaration = "vertex" declarator {"," declarator} ";"
 // declarator = name                      (creates a vertex)
-//            | name "(" [run {"," run}] ")" | name "{" ... "}"   (with properties)
-//            | name "=" run              (a reference)
-//            | name "[" ... run          (an array of null handles, as in C++)
+//            | name "(" [balanced {"," balanced}] ")" | name "{" ... "}"   (with properties)
+//            | name "=" balanced              (a reference)
+//            | name "[" ... balanced          (an array of null handles, as in C++)
 bool parser::parse_vertex_declaration(stmt& s) {
   take();  // vertex
   while (true) {
@@ -322,7 +294,7 @@ bool parser::parse_vertex_declaration(stmt& s) {
       std::string_view close = open->is("(") ? ")" : "}";
       d.how = vertex_declarator::create_with;
       while (!at(close) && !at_end()) {
-        d.args.push_back(parse_run({","}, mode::expression));
+        d.args.push_back(parse_balanced({","}, mode::expression));
         if (d.args.back().empty()) error(peek(), "expected an initial property value");
         if (!accept(",")) break;
       }
@@ -331,11 +303,11 @@ bool parser::parse_vertex_declaration(stmt& s) {
       if (d.args.empty()) d.how = vertex_declarator::create;
     } else if (accept("=")) {
       d.how = vertex_declarator::reference;
-      d.args.push_back(parse_run({",", ";"}, mode::expression));
+      d.args.push_back(parse_balanced({",", ";"}, mode::expression));
       if (d.args[0].empty()) error(peek(), "expected an initial value after '='");
     } else if (at("[")) {
       d.how = vertex_declarator::plain;
-      d.args.push_back(parse_run({",", ";"}, mode::expression));
+      d.args.push_back(parse_balanced({",", ";"}, mode::expression));
     } else if (!at(",") && !at(";")) {
       error(peek(), "expected ';', ',', '(' or '=' after the vertex '" + std::string(d.name->text) + "'");
       return false;

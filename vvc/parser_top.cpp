@@ -1,15 +1,8 @@
 // The top level: property blocks, execution blocks, C++ declarations.
 #include "parser.hpp"
-#include "words.hpp"
+#include "keywords.hpp"
 
 namespace vvc {
-
-namespace {
-
-int property_index(std::string_view w) { return w == "edge" ? 0 : w == "vertex" ? 1 : w == "mesh" ? 2 : -1; }
-const char* property_name(int i) { return i == 0 ? "edge" : i == 1 ? "vertex" : "mesh"; }
-
-}  // namespace
 
 // program = { preprocessor-line | property-block | execution-block | declaration }
 program parser::parse_program() {
@@ -21,9 +14,9 @@ program parser::parse_program() {
       item.kind = top_item::preproc;
       item.tok = take();
       p.items.push_back(std::move(item));
-    } else if (property_index(t.text) >= 0 && t.is_identifier() && peek(1).is("{")) {
+    } else if (property_block_index(t.text) >= 0 && t.is_identifier() && peek(1).is("{")) {
       parse_property_block(p);
-    } else if (t.is_identifier() && is_block_name(t.text) && peek(1).is("{")) {
+    } else if (t.is_identifier() && has_role(t.text, word_role::execution_block) && peek(1).is("{")) {
       parse_execution_block(p);
     } else if (starts_parameter()) {
       parse_parameter(p);
@@ -38,7 +31,7 @@ program parser::parse_program() {
   for (std::size_t i = 0; i < p.items.size(); ++i)
     if (p.items[i].kind == top_item::property) p.last_property_item = i;
   for (const property_block& b : p.properties) {
-    int k = property_index(b.keyword->text);
+    int k = property_block_index(b.keyword->text);
     (k == 0 ? p.edge : k == 1 ? p.vertex : p.mesh) = &b;
   }
   return p;
@@ -49,15 +42,15 @@ program parser::parse_program() {
 void parser::parse_property_block(program& p) {
   property_block b;
   b.keyword = take();
-  int k = property_index(b.keyword->text);
+  int k = property_block_index(b.keyword->text);
   for (const property_block& other : p.properties) {
-    int j = property_index(other.keyword->text);
+    int j = property_block_index(other.keyword->text);
     if (j == k)
-      error(*b.keyword, std::string("a second ") + property_name(k) + " block (the first is at line " +
+      error(*b.keyword, "a second " + std::string(property_block_word(k)) + " block (the first is at line " +
                             std::to_string(other.keyword->line) + ")");
     else if (j > k)
-      error(*b.keyword, std::string("the ") + property_name(k) + " block must come before the " +
-                            property_name(j) + " block (property blocks go edge, vertex, mesh)");
+      error(*b.keyword, "the " + std::string(property_block_word(k)) + " block must come before the " +
+                            std::string(property_block_word(j)) + " block (property blocks go edge, vertex, mesh)");
   }
   // All blocks come before any other use of any of the three words: the
   // model's types are complete only after the last block.
@@ -65,15 +58,15 @@ void parser::parse_property_block(program& p) {
   for (const token* u : first_use_)
     if (u && !used) used = u;
   if (used)
-    error(*b.keyword, std::string("the ") + property_name(k) +
+    error(*b.keyword, "the " + std::string(property_block_word(k)) +
                           " block must come before any other use of '" + std::string(used->text) +
                           "' (used at line " + std::to_string(used->line) + ")");
   b.open = take();
-  b.members = parse_run({}, mode::declaration);
+  b.members = parse_balanced({}, mode::declaration);
   if (at("}")) {
     b.close = take();
   } else {
-    error(*b.open, std::string("unterminated ") + property_name(k) + " block: this '{' has no matching '}'");
+    error(*b.open, "unterminated " + std::string(property_block_word(k)) + " block: this '{' has no matching '}'");
     return;
   }
   accept(";");
@@ -97,7 +90,6 @@ void parser::parse_execution_block(program& p) {
     if (other.kind == top_item::block && other.block_name->text == name)
       error(*item.block_name, "the execution block '" + name + "' is given twice (first at line " +
                                   std::to_string(other.block_name->line) + ")");
-  p.blocks.push_back(name);
   item.block_body = parse_compound();
   p.items.push_back(std::move(item));
 }
@@ -105,13 +97,13 @@ void parser::parse_execution_block(program& p) {
 // `param` is a word of ours only before a parameter's type and name, so a
 // C++ program may still call a variable `param`.
 bool parser::starts_parameter() const {
-  if (!peek().is_word("param") || !peek(2).is_identifier()) return false;
+  if (!(peek().is_identifier() && has_role(peek().text, word_role::parameter)) || !peek(2).is_identifier()) return false;
   for (std::string_view type : {"bool", "int", "unsigned", "float", "double"})
     if (peek(1).is_word(type)) return true;
   return false;
 }
 
-// parameter = "param" type name "=" run ["in" "[" run "," run "]"] ";"
+// parameter = "param" type name "=" balanced ["in" "[" balanced "," balanced "]"] ";"
 void parser::parse_parameter(program& p) {
   parameter d;
   d.keyword = take();
@@ -124,13 +116,13 @@ void parser::parse_parameter(program& p) {
   std::string of = " of parameter " + std::string(d.name->text);
   expect("=", "after the name" + of + " (a parameter needs a value: param " + std::string(d.type->text) + " " +
                   std::string(d.name->text) + " = VALUE;)");
-  d.value = parse_run({";", "in"}, mode::expression);
+  d.value = parse_balanced({";", "in"}, mode::expression);
   if (d.value.empty()) error(peek(), "expected the value" + of);
   if (accept("in")) {
     expect("[", "after 'in' (a range is written in [LO, HI])");
-    d.lo = parse_run({","}, mode::expression);
+    d.lo = parse_balanced({","}, mode::expression);
     expect(",", "between the ends of the range" + of);
-    d.hi = parse_run({}, mode::expression);
+    d.hi = parse_balanced({}, mode::expression);
     expect("]", "after the range" + of);
     if (d.lo.empty() || d.hi.empty()) error(*d.name, "the range" + of + " needs both ends: in [LO, HI]");
     if (d.type->is_word("bool")) error(*d.name, "a bool parameter has no range");
@@ -144,7 +136,7 @@ void parser::parse_parameter(program& p) {
   p.items.push_back(std::move(item));
 }
 
-// declaration = run (";" | ending in a function or namespace body)
+// declaration = balanced (";" | ending in a function or namespace body)
 void parser::parse_top_declaration(program& p) {
   std::size_t start = pos_;
   const token& first = peek();
@@ -156,7 +148,7 @@ void parser::parse_top_declaration(program& p) {
                        " = 0;' here and create the vertex in an execution block");
   top_item item;
   item.tok = &first;
-  item.cxx = parse_run({";"}, mode::declaration, true);
+  item.cxx = parse_balanced({";"}, mode::declaration, true);
   bool ends_with_body = !item.cxx.empty() && (item.cxx.back().kind == piece_kind::body ||
                                               (item.cxx.back().kind == piece_kind::group &&
                                                item.cxx.back().tok->is("{")));
@@ -184,7 +176,7 @@ void parser::parse_top_declaration(program& p) {
     }
   }
   for (std::size_t k = start; k < pos_; ++k) {
-    int w = toks_[k].is_identifier() ? property_index(toks_[k].text) : -1;
+    int w = toks_[k].is_identifier() ? property_block_index(toks_[k].text) : -1;
     if (w >= 0 && !first_use_[w]) first_use_[w] = &toks_[k];
   }
   p.items.push_back(std::move(item));

@@ -5,30 +5,14 @@
 #include <string>
 
 #include "parser.hpp"
-#include "words.hpp"
+#include "keywords.hpp"
 
 namespace vvc {
-
-namespace {
-
-// From an opening "(" at index i, the index of its matching ")" (or npos).
-std::size_t matching_paren(const std::vector<token>& toks, std::size_t i) {
-  int depth = 0;
-  for (std::size_t k = i; k < toks.size(); ++k) {
-    if (toks[k].is("(")) ++depth;
-    if (toks[k].is(")") && --depth == 0) return k;
-    if (toks[k].kind == tok::eof || toks[k].is(";")) break;
-  }
-  return std::string::npos;
-}
-
-
-}  // namespace
 
 bool parser::starts_operand(const token& t) const {
   switch (t.kind) {
     case tok::identifier:
-      return !is_expression_keyword(t.text) || t.text == "sizeof" || t.text == "new";
+      return !expression_follows(t.text) || t.text == "sizeof" || t.text == "new";
     case tok::number:
     case tok::string:
     case tok::character:
@@ -36,8 +20,7 @@ bool parser::starts_operand(const token& t) const {
     case tok::at:
       return true;
     case tok::punct:
-      return t.text == "(" || t.text == "!" || t.text == "~" || t.text == "::" || t.text == "*" ||
-             t.text == "&" || t.text == "-" || t.text == "+" || t.text == "++" || t.text == "--";
+      return t.text == "(" || t.text == "::" || is_prefix_operator(t);
     default:
       return false;
   }
@@ -56,23 +39,28 @@ bool parser::parse_vv_expression(pieces& out) {
   }
   if (!t.is_identifier()) return false;
   std::string_view w = t.text;
-  bool query = w == "nextto" || w == "prevto" || w == "valence" || w == "labelof";
-  if ((w == "next" || w == "prev") && peek(1).is("(")) {
-    std::size_t close = matching_paren(toks_, pos_ + 1);
-    query = close != std::string::npos && close + 1 < toks_.size() && toks_[close + 1].is_word("to");
-  }
+  if (!has_role(w, word_role::query)) return false;
+  bool query = is_reserved_vv_word(w);  // nextto, prevto, valence, labelof
+  if ((w == "next" || w == "prev") && peek(1).is("("))
+    query = looks_ahead([&] {
+      take();
+      parse_group({}, mode::expression);
+      return at("to");
+    });
   if ((w == "any" || w == "flagged") && peek(1).is_word("in")) query = true;
-  if (w == "is" && starts_operand(peek(1))) {
-    std::size_t end = scan_operand(pos_ + 1);
-    query = end != std::string::npos && toks_[end].is_word("in");
-  }
+  if (w == "is" && starts_operand(peek(1)))
+    query = looks_ahead([&] {
+      take();
+      parse_operand("after 'is'");
+      return at("in");
+    });
   if (!query) return false;
   out.push_back(parse_query());
   return true;
 }
 
 // query = ("nextto" | "prevto") ("flag" | operand) "in" operand
-//       | ("next" | "prev") "(" run ")" "to" operand "in" operand
+//       | ("next" | "prev") "(" balanced ")" "to" operand "in" operand
 //       | ("any" | "flagged") "in" operand
 //       | ("valence" | "labelof") operand
 //       | "is" operand "in" operand
@@ -105,7 +93,7 @@ piece parser::parse_query() {
   } else if (w == "next" || w == "prev") {
     p.query = w == "next" ? query_kind::next_i_to : query_kind::prev_i_to;
     take();  // (
-    pieces count = parse_run({}, mode::expression);
+    pieces count = parse_balanced({}, mode::expression);
     if (count.empty()) error(peek(), "expected the number of steps in '" + w + "(...)to'");
     expect(")", "after the number of steps");
     expect("to", "after '" + w + "(...)'");
@@ -125,7 +113,7 @@ piece parser::parse_query() {
   return p;
 }
 
-// operand = prefix-op operand | vv-expression postfix* | "(" run ")" postfix*
+// operand = prefix-op operand | vv-expression postfix* | "(" balanced ")" postfix*
 //         | primary postfix*
 // primary = ["::"] name {"::" name} [template-arguments] | literal {literal}
 pieces parser::parse_operand(const std::string& context) {
@@ -133,8 +121,7 @@ pieces parser::parse_operand(const std::string& context) {
   nesting_guard guard(*this);
   if (!guard.ok()) return out;
   const token& t = peek();
-  if (t.kind == tok::punct && (t.text == "!" || t.text == "~" || t.text == "-" || t.text == "+" ||
-                               t.text == "*" || t.text == "&" || t.text == "++" || t.text == "--")) {
+  if (is_prefix_operator(t)) {
     out.push_back(token_piece(take()));
     pieces rest = parse_operand(context);
     out.insert(out.end(), std::make_move_iterator(rest.begin()), std::make_move_iterator(rest.end()));
@@ -149,8 +136,7 @@ pieces parser::parse_operand(const std::string& context) {
     parse_postfix(out, true);
     return out;
   }
-  bool name = t.is_identifier() && !is_expression_keyword(t.text) && !is_reserved_vv_word(t.text);
-  if (t.is("::") || name) {
+  if (t.is("::") || is_plain_name(t)) {
     if (t.is("::")) out.push_back(token_piece(take()));
     if (!peek().is_identifier()) {
       error(peek(), "expected a name after '::'");
@@ -173,8 +159,8 @@ pieces parser::parse_operand(const std::string& context) {
   return out;
 }
 
-// postfix = "(" run ")" | "[" run "]" | ("." | "->" | "::") name
-//         | "$" name | "++" | "--" | template-arguments "(" run ")"
+// postfix = "(" balanced ")" | "[" balanced "]" | ("." | "->" | "::") name
+//         | "$" name | "++" | "--" | template-arguments "(" balanced ")"
 void parser::parse_postfix(pieces& out, bool allow_property) {
   while (!at_end()) {
     const token& t = peek();
@@ -190,45 +176,57 @@ void parser::parse_postfix(pieces& out, bool allow_property) {
       }
       out.push_back(token_piece(take()));
     } else if (t.kind == tok::dollar && allow_property) {
-      take();
-      if (!peek().is_identifier()) {
-        error(peek(), "expected a property name after '$', found " + found(peek()));
-        return;
-      }
-      piece p;
-      p.kind = piece_kind::property;
-      p.tok = take();
-      out.push_back(std::move(p));
+      if (!parse_property(out)) return;
     } else if (t.is("++") || t.is("--")) {
       out.push_back(token_piece(take()));
     } else if (t.is("<") && out.back().kind == piece_kind::token && out.back().tok->is_identifier()) {
-      // Template arguments, when a call or scope follows them: f<int>(x).
-      std::size_t k = pos_;
-      int angle = 0, paren = 0;
-      for (; k < toks_.size(); ++k) {
-        const token& u = toks_[k];
-        if (u.is("(") || u.is("[")) ++paren;
-        else if (u.is(")") || u.is("]")) --paren;
-        else if (paren == 0 && u.is("<")) ++angle;
-        else if (paren == 0 && u.is(">")) --angle;
-        else if (paren == 0 && u.is(">>")) angle -= 2;
-        if (paren < 0 || u.is(";") || u.is("{") || u.is("}") || u.kind == tok::eof) return;
-        if (angle <= 0) break;
-      }
-      if (angle != 0 || k + 1 >= toks_.size() ||
-          !(toks_[k + 1].is("(") || toks_[k + 1].is("::") || toks_[k + 1].is("{")))
-        return;
-      while (pos_ <= k) {
-        if (peek().is("(") || peek().is("[")) out.push_back(parse_group(out, mode::expression));
-        else out.push_back(token_piece(take()));
-      }
+      if (!parse_template_arguments(out)) return;
     } else {
       return;
     }
   }
 }
 
-// old-state = "`" ( "`" old-state | path | "(" run ")" postfix* | primary postfix* )
+// property = "$" name
+bool parser::parse_property(pieces& out) {
+  take();  // $
+  if (!peek().is_identifier()) {
+    error(peek(), "expected a property name after '$', found " + found(peek()));
+    return false;
+  }
+  piece p;
+  p.kind = piece_kind::property;
+  p.tok = take();
+  out.push_back(std::move(p));
+  return true;
+}
+
+// template-arguments = "<" ... ">" when "(" "::" or "{" follows the ">":
+// f<int>(x). Angle brackets are no groups, so this counts them over tokens.
+bool parser::parse_template_arguments(pieces& out) {
+  std::size_t k = pos_;
+  int angle = 0, paren = 0;
+  for (; k < toks_.size(); ++k) {
+    const token& u = toks_[k];
+    if (u.is("(") || u.is("[")) ++paren;
+    else if (u.is(")") || u.is("]")) --paren;
+    else if (paren == 0 && u.is("<")) ++angle;
+    else if (paren == 0 && u.is(">")) --angle;
+    else if (paren == 0 && u.is(">>")) angle -= 2;
+    if (paren < 0 || u.is(";") || u.is("{") || u.is("}") || u.kind == tok::eof) return false;
+    if (angle <= 0) break;
+  }
+  if (angle != 0 || k + 1 >= toks_.size() ||
+      !(toks_[k + 1].is("(") || toks_[k + 1].is("::") || toks_[k + 1].is("{")))
+    return false;
+  while (pos_ <= k) {
+    if (peek().is("(") || peek().is("[")) out.push_back(parse_group(out, mode::expression));
+    else out.push_back(token_piece(take()));
+  }
+  return true;
+}
+
+// old-state = "`" ( "`" old-state | path | "(" balanced ")" postfix* | primary postfix* )
 // with postfix not taking "$": `v$pos is (`v)$pos.
 piece parser::parse_old_state() {
   nesting_guard guard(*this);
@@ -252,8 +250,7 @@ piece parser::parse_old_state() {
   } else if (t.is("(")) {
     operand.push_back(parse_group(operand, mode::expression));
     parse_postfix(operand, false);
-  } else if ((t.is_identifier() && !is_expression_keyword(t.text) && !is_reserved_vv_word(t.text)) ||
-             t.is("::")) {
+  } else if (is_plain_name(t) || t.is("::")) {
     if (t.is("::")) operand.push_back(token_piece(take()));
     if (peek().is_identifier()) operand.push_back(token_piece(take()));
     parse_postfix(operand, false);
@@ -264,7 +261,7 @@ piece parser::parse_old_state() {
   return p;
 }
 
-// path = "@" ["&"] "(" run "," run ")" { ("next" | "prev" | "swap") [","] } "@"
+// path = "@" ["&"] "(" balanced "," balanced ")" { ("next" | "prev" | "swap") [","] } "@"
 piece parser::parse_path() {
   piece p;
   p.kind = piece_kind::path;
@@ -280,9 +277,9 @@ piece parser::parse_path() {
     return p;
   }
   take();
-  p.parts.push_back(parse_run({","}, mode::expression));
+  p.parts.push_back(parse_balanced({","}, mode::expression));
   expect(",", "between the two vertices of a path");
-  p.parts.push_back(parse_run({","}, mode::expression));
+  p.parts.push_back(parse_balanced({","}, mode::expression));
   expect(")", "after the two vertices of a path");
   if (p.assign)
     for (const pieces& v : p.parts)
@@ -315,23 +312,18 @@ piece parser::parse_path() {
 
 namespace {
 
-bool is_prefix_operator(const piece& p) {
-  return p.kind == piece_kind::token && p.tok->kind == tok::punct &&
-         (p.tok->text == "!" || p.tok->text == "~" || p.tok->text == "-" || p.tok->text == "+" ||
-          p.tok->text == "*" || p.tok->text == "&" || p.tok->text == "++" || p.tok->text == "--");
-}
+bool is_prefix_operator_piece(const piece& p) { return p.kind == piece_kind::token && is_prefix_operator(*p.tok); }
 
 // Pieces [b, e) form one operand: prefix operators, a primary, postfixes.
 bool is_operand_shape(const pieces& run, std::size_t b, std::size_t e) {
   std::size_t i = b;
-  while (i < e && is_prefix_operator(run[i])) ++i;
+  while (i < e && is_prefix_operator_piece(run[i])) ++i;
   if (i == e) return false;
   const piece& first = run[i];
   if (first.kind == piece_kind::token) {
     const token& t = *first.tok;
     if (t.is("::") && i + 1 < e && run[i + 1].kind == piece_kind::token && run[i + 1].tok->is_identifier()) ++i;
-    else if (!(t.kind == tok::number || t.kind == tok::string || t.kind == tok::character ||
-               (t.is_identifier() && !is_expression_keyword(t.text) && !is_reserved_vv_word(t.text))))
+    else if (!(t.kind == tok::number || t.kind == tok::string || t.kind == tok::character || is_plain_name(t)))
       return false;
   } else if (first.kind == piece_kind::group) {
     if (!first.tok->is("(")) return false;
@@ -378,80 +370,6 @@ void parser::as_edge_access(piece& g) {
   e.parts.push_back(std::move(x));
   e.parts.push_back(std::move(y));
   g = std::move(e);
-}
-
-// The same grammar as parse_operand, read over tokens without building
-// anything (so `is` can look ahead for its `in`).
-std::size_t parser::scan_operand(std::size_t i, int depth) const {
-  const std::size_t npos = std::string::npos;
-  if (depth > max_nesting) return npos;
-  auto at = [&](std::size_t k) -> const token& { return k < toks_.size() ? toks_[k] : toks_.back(); };
-  auto skip_group = [&](std::size_t k) -> std::size_t {  // k at an opener
-    int level = 0;
-    for (; k < toks_.size(); ++k) {
-      const token& t = toks_[k];
-      if (t.is("(") || t.is("[") || t.is("{")) ++level;
-      else if ((t.is(")") || t.is("]") || t.is("}")) && --level == 0) return k + 1;
-      else if (t.kind == tok::eof) break;
-    }
-    return npos;
-  };
-  // operand "in" operand, from k
-  auto operand_in_operand = [&](std::size_t k) -> std::size_t {
-    k = scan_operand(k, depth + 1);
-    if (k == npos || !at(k).is_word("in")) return npos;
-    return scan_operand(k + 1, depth + 1);
-  };
-  while (at(i).is("!") || at(i).is("~") || at(i).is("-") || at(i).is("+") || at(i).is("*") ||
-         at(i).is("&") || at(i).is("++") || at(i).is("--"))
-    ++i;
-  bool old = false;
-  while (at(i).kind == tok::backtick) ++i, old = true;
-  const token& t = at(i);
-  if (t.kind == tok::at) {  // a path: @ [&] ( ... ) ops @
-    std::size_t k = i + 1;
-    if (at(k).is("&")) ++k;
-    if (!at(k).is("(")) return npos;
-    k = skip_group(k);
-    while (k != npos && k < toks_.size() && at(k).kind != tok::at) {
-      if (at(k).is(";") || at(k).kind == tok::eof) return npos;
-      ++k;
-    }
-    i = k == npos ? npos : k + 1;
-  } else if (t.is_identifier() && !old) {
-    std::string_view w = t.text;
-    if (w == "nextto" || w == "prevto") {
-      if (at(i + 1).is_word("flag") && at(i + 2).is_word("in")) return scan_operand(i + 3, depth + 1);
-      return operand_in_operand(i + 1);
-    }
-    if ((w == "next" || w == "prev") && at(i + 1).is("(")) {
-      std::size_t k = skip_group(i + 1);
-      if (k != npos && at(k).is_word("to")) return operand_in_operand(k + 1);
-    }
-    if ((w == "any" || w == "flagged") && at(i + 1).is_word("in")) return scan_operand(i + 2, depth + 1);
-    if (w == "valence" || w == "labelof") return scan_operand(i + 1, depth + 1);
-    if (w == "is") {
-      std::size_t k = operand_in_operand(i + 1);
-      if (k != npos) return k;
-    }
-    ++i;
-  } else if (t.is("(")) {
-    i = skip_group(i);
-  } else if (t.is_identifier() || t.kind == tok::number || t.kind == tok::character || t.is("::")) {
-    ++i;
-  } else if (t.kind == tok::string) {
-    while (at(i).kind == tok::string) ++i;
-  } else {
-    return npos;
-  }
-  while (i != npos) {
-    const token& u = at(i);
-    if (u.is("(") || u.is("[")) i = skip_group(i);
-    else if ((u.is(".") || u.is("->") || u.is("::") || u.kind == tok::dollar) && at(i + 1).is_identifier()) i += 2;
-    else if (u.is("++") || u.is("--")) ++i;
-    else break;
-  }
-  return i;
 }
 
 }  // namespace vvc

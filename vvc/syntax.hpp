@@ -166,7 +166,6 @@ struct program {
   const property_block* vertex = nullptr;
   const property_block* mesh = nullptr;
   std::size_t last_property_item = 0;      // index into items; items.size() if none
-  std::vector<std::string> blocks;         // execution blocks present
   std::vector<const token*> global_meshes; // names of top-level `mesh` variables
   std::vector<parameter> parameters;       // `param` globals, in source order
 };

@@ -1,6 +1,6 @@
-// Runs of tokens and the groups in them.
+// Balanced token sequences and the groups in them.
 #include "parser.hpp"
-#include "words.hpp"
+#include "keywords.hpp"
 
 namespace vvc {
 
@@ -21,7 +21,7 @@ bool is_specifier_token(const piece& p) {
   if (p.kind != piece_kind::token) return false;
   const token& t = *p.tok;
   if (t.kind == tok::identifier)
-    return !is_expression_keyword(t.text) || t.text == "noexcept";
+    return !expression_follows(t.text) || t.text == "noexcept";
   return t.kind == tok::punct &&
          (t.text == "&" || t.text == "&&" || t.text == "*" || t.text == "->" || t.text == "::" ||
           t.text == "<" || t.text == ">" || t.text == ",");
@@ -75,9 +75,9 @@ void parser::refuse_writing_the_old_state(const pieces& out, const token& op) {
                          " is read-only: it is what the vertex was at 'synchronise'");
 }
 
-// run = { group | vv-expression | "$" name | token } up to a stop token (or
+// balanced = { group | vv-expression | "$" name | token } up to a stop token (or
 // a closer) at this depth; neither is consumed.
-pieces parser::parse_run(std::initializer_list<std::string_view> stops, mode m,
+pieces parser::parse_balanced(std::initializer_list<std::string_view> stops, mode m,
                          bool declaration_ends) {
   pieces out;
   while (!at_end() && !diag_.saturated()) {
@@ -97,16 +97,7 @@ pieces parser::parse_run(std::initializer_list<std::string_view> stops, mode m,
     if (parse_vv_expression(out)) continue;
     if (t.kind == tok::dollar) {
       if (!ends_operand(out)) error(t, "'$' must follow a vertex, as in v$pos");
-      take();
-      const token& name = peek();
-      if (!name.is_identifier()) {
-        error(name, "expected a property name after '$', found " + found(name));
-        continue;
-      }
-      piece p;
-      p.kind = piece_kind::property;
-      p.tok = take();
-      out.push_back(std::move(p));
+      parse_property(out);
       continue;
     }
     refuse_writing_the_old_state(out, t);
@@ -117,7 +108,7 @@ pieces parser::parse_run(std::initializer_list<std::string_view> stops, mode m,
   return out;
 }
 
-// group = "(" run ")" | "[" run "]" | "{" run "}"
+// group = "(" balanced ")" | "[" balanced "]" | "{" balanced "}"
 //       | "{" statements "}"   (a function or lambda body)
 //       | "{" declarations "}" (a class or namespace body)
 // A `(` that is no call may hold an edge access (X ^ Y) or (X | Y).
@@ -139,15 +130,13 @@ piece parser::parse_group(const pieces& before, mode m) {
     if (lambda || (m == mode::declaration && starts_function_body(before))) {
       p.kind = piece_kind::body;
       p.lambda = lambda;
-      ++depth_;
       body_statements(p.body);
-      --depth_;
     } else if (int scope = opens_scope_body(before, before.size())) {
       p.kind = scope == 1 ? piece_kind::class_body : piece_kind::group;
       inner = mode::declaration;
     }
   }
-  if (p.kind != piece_kind::body) p.parts.push_back(parse_run({}, inner));
+  if (p.kind != piece_kind::body) p.parts.push_back(parse_balanced({}, inner));
   std::string_view want = closer_of(p.tok->text);
   if (peek().is(want)) {
     p.close = take();
