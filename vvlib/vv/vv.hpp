@@ -17,7 +17,7 @@
 #include "io/vvm.hpp"
 #include "iteration.hpp"
 #include "mesh.hpp"
-#include "orbits.hpp"
+#include "faces.hpp"
 #include "path.hpp"
 #include "queries.hpp"
 #include "vertex.hpp"

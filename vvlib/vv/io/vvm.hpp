@@ -24,7 +24,7 @@
 #include "../edits.hpp"
 #include "../fields.hpp"
 #include "../mesh.hpp"
-#include "../orbits.hpp"
+#include "../faces.hpp"
 #include "files.hpp"
 
 namespace vv {
