@@ -18,8 +18,10 @@
 #include "iteration.hpp"
 #include "mesh.hpp"
 #include "faces.hpp"
+#include "insert.hpp"
 #include "path.hpp"
 #include "queries.hpp"
+#include "target_first.hpp"
 #include "vertex.hpp"
 
 namespace vv {
