@@ -38,7 +38,7 @@ void subdivide(vv::mesh<Tr>& S) {
   // synchronise S;
   vv::synchronise(S);
   // mesh N;
-  mesh N(*S.ctx());
+  mesh N(vv::context_of(S));
   // forall p in S {
   for (vertex p : vv::each(S)) {
     // forall q in `p {
@@ -46,7 +46,7 @@ void subdivide(vv::mesh<Tr>& S) {
       // if (p < q) {
       if (p < q) {
         // vertex x;
-        vertex x = S.ctx()->new_vertex();
+        vertex x = vv::context_of(S).new_vertex();
         // x$pos = 3.0/8 * (`p$pos + `q$pos)
         //       + 1.0/8 * (`(nextto q in `p)$pos + `(prevto q in `p)$pos);
         x.props().pos = 3.0 / 8 * (vv::old(p).props().pos + vv::old(q).props().pos) +

@@ -1,7 +1,7 @@
 // Topology changes: InsertEdge (split one face, or join two: a handle or a
 // tube) and DeleteEdge (join the faces beside an edge, open a face into a
 // boundary, undo a handle), on the cube, the octahedron and an open grid.
-// Counts and genus are exact; faces are face orbits (vv/orbits.hpp).
+// Counts and genus are exact; faces are face orbits (vv/faces.hpp).
 #include <gtest/gtest.h>
 
 #include <algorithm>

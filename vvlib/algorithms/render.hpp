@@ -18,7 +18,7 @@
 
 #include <vv/iteration.hpp>
 #include <vv/mesh.hpp>
-#include <vv/orbits.hpp>
+#include <vv/faces.hpp>
 #include <vv/queries.hpp>
 
 namespace algorithms {

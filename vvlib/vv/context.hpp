@@ -31,7 +31,7 @@
 
 #include "detail/neighbourhood.hpp"
 #include "error.hpp"
-#include "fwd.hpp"
+#include "traits.hpp"
 #include "proxy.hpp"
 
 namespace vv {

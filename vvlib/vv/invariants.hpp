@@ -18,7 +18,7 @@
 #include <vector>
 
 #include "mesh.hpp"
-#include "orbits.hpp"
+#include "faces.hpp"
 
 namespace vv {
 

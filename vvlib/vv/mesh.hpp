@@ -264,6 +264,15 @@ bool is_in(const vertex<Tr>& v, const mesh<Tr>& m, where = where::here()) noexce
   return m.contains(v);
 }
 
+//! The context of a mesh, for ordinary code (`G::mesh N(vv::context_of(S));`,
+//! `vv::context_of(S).new_vertex()`).
+//! \throw vv::error when the mesh has none yet (default-constructed, empty).
+template <class Tr>
+context<Tr>& context_of(const mesh<Tr>& m, where w = where::here()) {
+  if (!m.ctx()) raise(w, "context_of", [] { return std::string("the mesh has no context yet"); });
+  return *m.ctx();
+}
+
 //! `synchronise M;`: save the current state of every member as its old
 //! state (properties, neighbourhood with records, flag).
 template <class Tr>

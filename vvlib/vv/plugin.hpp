@@ -44,7 +44,7 @@
 #include "inspect.hpp"
 #include "mesh.hpp"
 #include "neighbourhood_check.hpp"
-#include "orbits.hpp"
+#include "faces.hpp"
 #include "polylines.hpp"
 #include "proxy.hpp"
 

@@ -9,7 +9,7 @@
 #include <limits>
 #include <vector>
 
-#include "orbits.hpp"
+#include "faces.hpp"
 
 namespace vv {
 

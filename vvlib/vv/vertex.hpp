@@ -99,6 +99,14 @@ unsigned label_of(const vertex<Tr>& v) noexcept {
   return v.label();
 }
 
+//! The context of a vertex (`vv::context_of(v).new_vertex()`).
+//! \throw vv::error for the null vertex, which belongs to no context.
+template <class Tr>
+context<Tr>& context_of(const vertex<Tr>& v, where w = where::here()) {
+  if (!v) raise(w, "context_of", [] { return std::string("the null vertex has no context"); });
+  return *v.ctx();
+}
+
 //! How errors name a vertex.
 template <class Tr>
 std::string name_of(const vertex<Tr>& v) {

@@ -17,9 +17,11 @@
 #include "io/vvm.hpp"
 #include "iteration.hpp"
 #include "mesh.hpp"
-#include "orbits.hpp"
+#include "faces.hpp"
+#include "insert.hpp"
 #include "path.hpp"
 #include "queries.hpp"
+#include "target_first.hpp"
 #include "vertex.hpp"
 
 namespace vv {

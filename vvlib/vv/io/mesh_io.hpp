@@ -3,7 +3,7 @@
 // mesh members readFile / writeFile that programs call.
 //
 // A written polygon file lists the members in iteration order and the face
-// orbits (vv/orbits.hpp) as faces; orbits longer than max_face are holes
+// orbits (vv/faces.hpp) as faces; orbits longer than max_face are holes
 // and left out. A curve (vv/polylines.hpp) is written as polylines, which
 // of the polygon formats only OBJ can hold (`l` lines). The formats
 // themselves are compiled once, in vv_formats (vv/io/polygon_files.hpp):
@@ -16,7 +16,7 @@
 #include <string>
 #include <vector>
 
-#include "../orbits.hpp"
+#include "../faces.hpp"
 #include "../polylines.hpp"
 #include "files.hpp"
 #include "from_faces.hpp"

@@ -2,7 +2,7 @@
 // the standard formats OpenMesh reads and writes (OBJ, OFF, PLY, STL).
 //
 // To OpenMesh: the members in iteration order become the vertices, the face
-// orbits (vv/orbits.hpp) the faces; orbits longer than max_face are holes.
+// orbits (vv/faces.hpp) the faces; orbits longer than max_face are holes.
 // From OpenMesh: faces become neighbourhoods (vv/io/from_faces.hpp).
 #pragma once
 
@@ -16,7 +16,7 @@
 #include <string>
 #include <vector>
 
-#include "../orbits.hpp"
+#include "../faces.hpp"
 #include "from_faces.hpp"
 #include "positions.hpp"
 

@@ -24,7 +24,7 @@
 #include "../edits.hpp"
 #include "../fields.hpp"
 #include "../mesh.hpp"
-#include "../orbits.hpp"
+#include "../faces.hpp"
 #include "files.hpp"
 
 namespace vv {
@@ -177,125 +177,171 @@ void say_notes(context<Tr>& ctx, const vvm_notes& notes, const where& w) {
 
 }  // namespace detail
 
-//! Replaces the contents and properties of m with the .vvm text (name is
-//! used in error messages). New vertices are created in file order.
-//! What the file let through without a word is added to notes when given.
-template <class Tr>
-void parse_vvm(mesh<Tr>& m, const io::text_file& file, detail::vvm_notes* notes = nullptr) {
-  detail::vvm_notes ignored;
-  detail::vvm_notes& said = notes ? *notes : ignored;
-  using VP = typename Tr::vertex_props;
-  using EP = typename Tr::edge_props;
-  using MP = typename Tr::mesh_props;
-  context<Tr>* ctx = m.ctx();
-  if (!ctx)
-    throw error(file.name(), 0,
-                "the mesh has no context to create vertices in (construct it with mesh(context))");
+namespace detail {
+
+// Validate: the text is well-formed XML whose one top-level element is
+// <mesh>. doc keeps what the returned root points into.
+inline pugi::xml_node vvm_root(pugi::xml_document& doc, const io::text_file& file) {
   if (file.text().find_first_not_of(" \t\r\n") == std::string::npos)
     file.fail(0, "empty file (expected a <mesh> element)");
-
-  pugi::xml_document doc;
   pugi::xml_parse_result parsed = doc.load_buffer(file.text().data(), file.text().size(),
                                                   pugi::parse_default, pugi::encoding_utf8);
   if (!parsed) file.fail(parsed.offset, std::string("malformed XML: ") + parsed.description());
-  detail::check_structure(doc, file);
+  check_structure(doc, file);
   pugi::xml_node root = doc.document_element();
   if (!root) file.fail(0, "no root element (expected <mesh>)");
   if (std::strcmp(root.name(), "mesh") != 0)
     file.fail(root.offset_debug(), std::string("the root element is <") + root.name() +
                                        ">, expected <mesh>");
+  return root;
+}
 
-  MP mesh_props{};
-  static const char* no_skip[] = {nullptr};
-  std::map<std::string, std::size_t> mesh_given, vertex_given, edge_given;
-  detail::set_fields_from(mesh_props, root, file, no_skip, "mesh", "mesh", mesh_given, said);
-
-  std::vector<pugi::xml_node> vs, es;
+// The <v> and <e> children of <mesh>, each in file order; anything else fails.
+struct vvm_elements {
+  std::vector<pugi::xml_node> vertices, records;
+};
+inline vvm_elements vvm_children(const pugi::xml_node& root, const io::text_file& file) {
+  vvm_elements out;
   for (pugi::xml_node n : root.children()) {
     if (n.type() != pugi::node_element) continue;
-    if (std::strcmp(n.name(), "v") == 0) vs.push_back(n);
-    else if (std::strcmp(n.name(), "e") == 0) es.push_back(n);
+    if (std::strcmp(n.name(), "v") == 0) out.vertices.push_back(n);
+    else if (std::strcmp(n.name(), "e") == 0) out.records.push_back(n);
     else
       file.fail(n.offset_debug(), std::string("unexpected element <") + n.name() +
                                       "> (expected <v> or <e>)");
   }
-  const std::size_t count = vs.size();
+  return out;
+}
 
-  std::vector<VP> props(count, VP());
-  std::vector<std::vector<std::uint32_t>> nbs(count);
+// Everything a .vvm file says, checked, before any vertex exists.
+template <class Tr>
+struct vvm_contents {
+  struct record {
+    std::uint32_t first, second;
+    bool symmetric;
+    typename Tr::edge_props value;
+  };
+  typename Tr::mesh_props mesh_props{};
+  std::vector<typename Tr::vertex_props> props;       // per vertex, in file order
+  std::vector<std::vector<std::uint32_t>> nbs;        // neighbour indices, per vertex
+  std::vector<record> records;
+};
+
+// Vertices: the properties and neighbour list of each <v>.
+template <class Tr>
+void read_vvm_vertices(vvm_contents<Tr>& c, const std::vector<pugi::xml_node>& vs,
+                       const io::text_file& file, std::map<std::string, std::size_t>& given,
+                       vvm_notes& notes) {
+  const std::size_t count = vs.size();
+  c.props.assign(count, typename Tr::vertex_props());
+  c.nbs.assign(count, {});
   static const char* v_skip[] = {"nb", nullptr};
   for (std::size_t i = 0; i < count; ++i) {
     std::string who = "vertex " + std::to_string(i);
     auto fail = [&](const std::string& problem) { file.fail(vs[i].offset_debug(), who + ": " + problem); };
-    detail::set_fields_from(props[i], vs[i], file, v_skip, who, "v", vertex_given, said);
+    set_fields_from(c.props[i], vs[i], file, v_skip, who, "v", given, notes);
     pugi::xml_attribute nb = vs[i].attribute("nb");
     if (!nb) fail("no nb attribute (write nb=\"\" for a vertex without neighbours)");
     std::istringstream tokens(nb.value());
     std::string token;
     while (tokens >> token) {
-      std::uint32_t j = detail::parse_index(token, count, fail);
+      std::uint32_t j = parse_index(token, count, fail);
       if (j == i) fail("lists itself as a neighbour");
-      for (std::uint32_t k : nbs[i])
+      for (std::uint32_t k : c.nbs[i])
         if (k == j) fail("lists vertex " + token + " twice as a neighbour");
-      nbs[i].push_back(j);
+      c.nbs[i].push_back(j);
     }
   }
+}
 
-  struct record {
-    std::uint32_t first, second;
-    bool symmetric;
-    EP value;
-  };
-  std::vector<record> records;
+// Records: each <e> names an existing half-edge (both ways when symmetric).
+template <class Tr>
+void read_vvm_records(vvm_contents<Tr>& c, const std::vector<pugi::xml_node>& es,
+                      const io::text_file& file, std::map<std::string, std::size_t>& given,
+                      vvm_notes& notes) {
+  using record = typename vvm_contents<Tr>::record;
+  const std::size_t count = c.nbs.size();
   static const char* e_skip[] = {"symmetric", "first", "second", nullptr};
+  auto adjacent = [&](std::uint32_t a, std::uint32_t b) {
+    for (std::uint32_t k : c.nbs[a])
+      if (k == b) return true;
+    return false;
+  };
   for (pugi::xml_node e : es) {
     auto fail = [&](const std::string& problem) { file.fail(e.offset_debug(), "edge: " + problem); };
     auto index_attr = [&](const char* name) {
       pugi::xml_attribute a = e.attribute(name);
       if (!a) fail(std::string("no ") + name + " attribute");
-      return detail::parse_index(a.value(), count, fail);
+      return parse_index(a.value(), count, fail);
     };
-    record r{index_attr("first"), index_attr("second"), false, EP{}};
+    record r{index_attr("first"), index_attr("second"), false, typename Tr::edge_props{}};
     if (pugi::xml_attribute s = e.attribute("symmetric")) {
       if (!text_to_value(std::string(s.value()), r.symmetric))
         fail(std::string("symmetric must be 0 or 1, not \"") + s.value() + "\"");
     }
-    auto adjacent = [&](std::uint32_t a, std::uint32_t b) {
-      for (std::uint32_t k : nbs[a])
-        if (k == b) return true;
-      return false;
-    };
     if (!adjacent(r.first, r.second))
       fail("vertex " + std::to_string(r.second) + " is not a neighbour of vertex " +
            std::to_string(r.first));
     if (r.symmetric && !adjacent(r.second, r.first))
       fail("symmetric, but vertex " + std::to_string(r.first) + " is not a neighbour of vertex " +
            std::to_string(r.second));
-    detail::set_fields_from(r.value, e, file, e_skip, "edge", "e", edge_given, said);
-    records.push_back(std::move(r));
+    set_fields_from(r.value, e, file, e_skip, "edge", "e", given, notes);
+    c.records.push_back(std::move(r));
   }
+}
 
-  detail::note_missing_fields<MP>(file, "mesh", "meshes", mesh_given, 1, said);
-  detail::note_missing_fields<VP>(file, "vertex", "vertices", vertex_given, count, said);
-
-  // Everything is valid: build the new contents, then swap them in.
-  mesh<Tr> fresh(*ctx);
-  static_cast<MP&>(fresh) = mesh_props;
+// Build: create the vertices in file order and swap the new contents into m.
+template <class Tr>
+void build_vvm_mesh(mesh<Tr>& m, const vvm_contents<Tr>& c) {
+  context<Tr>& ctx = *m.ctx();
+  const std::size_t count = c.props.size();
+  mesh<Tr> fresh(ctx);
+  static_cast<typename Tr::mesh_props&>(fresh) = c.mesh_props;
   std::vector<vertex<Tr>> created;
   created.reserve(count);
-  for (std::size_t i = 0; i < count; ++i) created.push_back(ctx->new_vertex(props[i]));
+  for (std::size_t i = 0; i < count; ++i) created.push_back(ctx.new_vertex(c.props[i]));
   std::vector<vertex<Tr>> list;
   for (std::size_t i = 0; i < count; ++i) {
     list.clear();
-    for (std::uint32_t j : nbs[i]) list.push_back(created[j]);
+    for (std::uint32_t j : c.nbs[i]) list.push_back(created[j]);
     make_nb_from(created[i], list);
     fresh.add(created[i]);
   }
-  for (const record& r : records) {
+  for (const auto& r : c.records) {
     edge(created[r.first], created[r.second]) = r.value;
     if (r.symmetric) edge(created[r.second], created[r.first]) = r.value;
   }
   m = std::move(fresh);
+}
+
+}  // namespace detail
+
+//! Replaces the contents and properties of m with the .vvm text (name is
+//! used in error messages). New vertices are created in file order.
+//! What the file let through without a word is added to notes when given.
+//! The whole file is validated, read and checked before the mesh changes.
+template <class Tr>
+void parse_vvm(mesh<Tr>& m, const io::text_file& file, detail::vvm_notes* notes = nullptr) {
+  detail::vvm_notes ignored;
+  detail::vvm_notes& said = notes ? *notes : ignored;
+  if (!m.ctx())
+    throw error(file.name(), 0,
+                "the mesh has no context to create vertices in (construct it with mesh(context))");
+  pugi::xml_document doc;
+  pugi::xml_node root = detail::vvm_root(doc, file);
+
+  detail::vvm_contents<Tr> contents;
+  static const char* no_skip[] = {nullptr};
+  std::map<std::string, std::size_t> mesh_given, vertex_given, edge_given;
+  detail::set_fields_from(contents.mesh_props, root, file, no_skip, "mesh", "mesh", mesh_given, said);
+  detail::vvm_elements elements = detail::vvm_children(root, file);
+  detail::read_vvm_vertices(contents, elements.vertices, file, vertex_given, said);
+  detail::read_vvm_records(contents, elements.records, file, edge_given, said);
+
+  detail::note_missing_fields<typename Tr::mesh_props>(file, "mesh", "meshes", mesh_given, 1, said);
+  detail::note_missing_fields<typename Tr::vertex_props>(file, "vertex", "vertices", vertex_given,
+                                                         contents.props.size(), said);
+  detail::build_vvm_mesh(m, contents);
 }
 
 //! Reads a .vvm file into m (see parse_vvm).

@@ -97,6 +97,25 @@ std::vector<std::vector<std::uint32_t>> face_orbits(
   return orbits(m, max_face).faces;
 }
 
+//! The closed face orbits as vertex handles: the same faces, in the same
+//! order and from the same first vertex, as face_orbits() gives positions.
+template <class Tr>
+std::vector<std::vector<vertex<Tr>>> face_vertices(
+    const mesh<Tr>& m, std::size_t max_face = std::numeric_limits<std::size_t>::max()) {
+  std::vector<std::vector<std::uint32_t>> orbits_by_position = orbits(m, max_face).faces;
+  std::vector<std::uint32_t> members;
+  members.reserve(m.size());
+  for (std::uint32_t id : m.slots())
+    if (id) members.push_back(id);
+  std::vector<std::vector<vertex<Tr>>> out(orbits_by_position.size());
+  for (std::size_t f = 0; f < out.size(); ++f) {
+    out[f].reserve(orbits_by_position[f].size());
+    for (std::uint32_t at : orbits_by_position[f])
+      out[f].push_back(vertex<Tr>::from_slot(m.ctx(), members[at]));
+  }
+  return out;
+}
+
 //! Oriented edges that lie on no closed orbit.
 template <class Tr>
 std::size_t face_orbit_failures(const mesh<Tr>& m) {

@@ -1,4 +1,5 @@
-// Forward declarations and the traits bundle that parameterises everything.
+// The traits bundle that parameterises everything (the property structs of
+// one model), the empty property struct, and forward declarations.
 #pragma once
 
 namespace vv {
