@@ -1,11 +1,12 @@
 # vv_parse_case(FILE): reads one regression case (cases/NAME.test) into the
 # caller's variables model, steps, mesh, vertices, edges, faces, max_face,
-# tolerance and view. Lines are `key = value` (a `#` that starts a word
+# tolerance, view and gallery_mesh (the last two only for the picture of
+# scripts/make-gallery). Lines are `key = value` (a `#` that starts a word
 # starts a comment); a key that is not one of those, or a line that is not
 # a `key = value`, is an error naming the file and line: a typo must not
 # drop a check without a word.
 cmake_policy(SET CMP0057 NEW)  # if(IN_LIST), also when run as a script
-set(VV_CASE_KEYS model steps mesh vertices edges faces max_face tolerance view)
+set(VV_CASE_KEYS model steps mesh vertices edges faces max_face tolerance view gallery_mesh)
 
 function(vv_parse_case file)
   foreach(key IN LISTS VV_CASE_KEYS)
