@@ -11,7 +11,7 @@
 #include <iostream>
 #include <string>
 
-#include <vv/plugin.hpp>
+#include <vv/plugin/plugin.hpp>
 
 #include "vv_check.hpp"
 

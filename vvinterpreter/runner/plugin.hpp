@@ -1,11 +1,11 @@
 // A loaded model plugin: the shared object and its entry points
-// (vvlib/vv/plugin.hpp). Unloading it destroys the model's state.
+// (vvlib/vv/plugin/plugin.hpp). Unloading it destroys the model's state.
 #pragma once
 
 #include <memory>
 #include <string>
 
-#include <vv/plugin.hpp>
+#include <vv/plugin/plugin.hpp>
 
 namespace vvi {
 

@@ -32,7 +32,7 @@
 #include "detail/neighbourhood.hpp"
 #include "error.hpp"
 #include "fwd.hpp"
-#include "proxy.hpp"
+#include "plugin/proxy.hpp"
 
 namespace vv {
 

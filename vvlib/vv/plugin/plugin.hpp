@@ -38,14 +38,14 @@
 #include <string>
 #include <vector>
 
-#include "io/positions.hpp"
-#include "io/mesh_io.hpp"
-#include "io/vvm.hpp"
-#include "inspect.hpp"
-#include "mesh.hpp"
-#include "neighbourhood_check.hpp"
-#include "orbits.hpp"
-#include "polylines.hpp"
+#include "../io/positions.hpp"
+#include "../io/mesh_io.hpp"
+#include "../io/vvm.hpp"
+#include "../inspect.hpp"
+#include "../mesh.hpp"
+#include "../neighbourhood_check.hpp"
+#include "../orbits.hpp"
+#include "../polylines.hpp"
 #include "proxy.hpp"
 
 #define VV_PLUGIN_ABI_VERSION 4
