@@ -105,19 +105,18 @@ class emitter {
     w_.text(")};");
   }
 
-  // The parameter table (vv_plugin_params): name, type, the global, range, line.
-  std::string parameter_entry_point() const {
-    std::string s = "VV_PLUGIN_EXPORT const vv_param_entry* vv_plugin_params(std::size_t* vv_count) {\n";
-    if (p_.parameters.empty()) return s + "  *vv_count = 0;\n  return nullptr;\n}\n";
-    s += "  static const vv_param_entry vv_table[] = {\n";
+  // The parameter table (vv_plugin::params): name, type, the global, range, line.
+  std::string parameter_table() const {
+    if (p_.parameters.empty()) return "";
+    std::string s = "static const vv_param_entry vv_param_table[] = {\n";
     for (const parameter& d : p_.parameters) {
       std::string name(d.name->text);
       bool ranged = !d.lo.empty();
-      s += "      {\"" + name + "\", \"" + std::string(d.type->text) + "\", &" + name + ", " +
+      s += "    {\"" + name + "\", \"" + std::string(d.type->text) + "\", &" + name + ", " +
            (ranged ? "1, vv_range_of_" + name + "[0], vv_range_of_" + name + "[1], " : std::string("0, 0, 0, ")) +
            std::to_string(d.name->line) + "},\n";
     }
-    return s + "  };\n  *vv_count = " + std::to_string(p_.parameters.size()) + ";\n  return vv_table;\n}\n";
+    return s + "};\n";
   }
 
   void property(const property_block& b) {
@@ -180,69 +179,79 @@ class emitter {
     w_.generated(s);
   }
 
+  // The plugin descriptor (vv/plugin/plugin.hpp): the functions it points
+  // to, then the one exported object, its members in the header's order.
   void entry_points() {
-    std::string s = "\n// ---- plugin entry points (vv/plugin/plugin.hpp) ----\n";
-    s += "VV_PLUGIN_EXPORT int vv_plugin_abi_version() { return VV_PLUGIN_ABI_VERSION; }\n";
-    s += "VV_PLUGIN_EXPORT void vv_plugin_configure(const vv_plugin_settings* vv_settings) {\n"
+    std::string s = "\n// ---- the plugin descriptor (vv/plugin/plugin.hpp) ----\n";
+    s += "static void vv_entry_configure(const vv_plugin_settings* vv_settings) {\n"
          "  vv::plugin::configure(vv_model, *vv_settings, " + cpp_string_literal(o_.source_dir) + ");\n}\n";
+    // vv_plugin's block members, in its order; NULL for a block the program lacks.
     static const char* const names[] = {"start", "step", "end", "close", "render_init", "render", "render_screen"};
-    std::string present;
+    std::string blocks;
     for (const char* name : names) {
       bool has = false;
       for (const std::string& b : p_.blocks) has = has || b == name;
-      s += std::string("VV_PLUGIN_EXPORT const char* vv_plugin_") + name + "() { ";
-      if (has) {
-        s += std::string("return vv::plugin::guarded(vv_exchange, vv_block_") + name + "); }\n";
-        present += std::string("\"") + name + "\", ";
-      } else {
-        s += "return nullptr; }\n";
-      }
+      if (has)
+        s += std::string("static const char* vv_entry_") + name + "() { return vv::plugin::guarded(vv_exchange, vv_block_" +
+             name + "); }\n";
+      blocks += std::string("    ") + (has ? std::string("vv_entry_") + name : std::string("nullptr")) + ",  // " + name + "\n";
     }
-    s += "VV_PLUGIN_EXPORT const char* vv_plugin_reread() {\n"
+    s += "static const char* vv_entry_reread() {\n"
          "  return vv::plugin::guarded(vv_exchange, [] { vv_model.host().reread_files(); });\n}\n";
-    s += "VV_PLUGIN_EXPORT int vv_plugin_has_block(const char* vv_name) {\n"
-         "  static const char* const vv_present[] = {" + present + "nullptr};\n"
-         "  for (const char* const* vv_b = vv_present; *vv_b; ++vv_b)\n"
-         "    if (std::string(*vv_b) == vv_name) return 1;\n"
-         "  return 0;\n}\n";
-    s += "VV_PLUGIN_EXPORT vv::proxy* vv_plugin_proxy() { return &vv_model.host(); }\n";
-    s += "VV_PLUGIN_EXPORT const char* vv_plugin_file_objects() {\n"
+    s += "static vv::proxy* vv_entry_proxy() { return &vv_model.host(); }\n";
+    s += "static const char* vv_entry_file_objects() {\n"
          "  return vv::plugin::file_object_paths(vv_exchange, vv_model.host());\n}\n";
-    s += "VV_PLUGIN_EXPORT const void* const* vv_plugin_error_frames(std::size_t* vv_count) {\n"
+    s += "static const void* const* vv_entry_error_frames(std::size_t* vv_count) {\n"
          "  *vv_count = vv_exchange.error_frames.size();\n"
          "  return vv_exchange.error_frames.data();\n}\n";
-    s += "VV_PLUGIN_EXPORT const vv_mesh_entry* vv_plugin_meshes(std::size_t* vv_count) {\n";
-    if (p_.global_meshes.empty()) {
-      s += "  *vv_count = 0;\n  return nullptr;\n}\n";
-    } else {
-      s += "  static const vv_mesh_entry vv_table[] = {\n";
-      for (const token* m : p_.global_meshes) {
-        std::string n(m->text);
-        s += "      {\"" + n + "\", []() -> std::size_t { return " + n + ".size(); },\n"
-             "       [](const char* vv_path) { return vv::plugin::write_vvm(vv_exchange, " + n + ", vv_path); },\n"
-             "       [](std::size_t vv_max_face, vv_geometry* vv_out) {\n"
-             "         return vv::plugin::geometry(vv_exchange, " + n + ", vv_max_face, vv_out);\n"
-             "       }},\n";
-      }
-      s += "  };\n  *vv_count = " + std::to_string(p_.global_meshes.size()) + ";\n  return vv_table;\n}\n";
-    }
+    s += mesh_table();
+    s += parameter_table();
     s += mesh_set_entry_points();
-    s += parameter_entry_point();
+    const std::string meshes = std::to_string(p_.global_meshes.size());
+    const std::string params = std::to_string(p_.parameters.size());
+    s += "VV_PLUGIN_EXPORT const vv_plugin vv_plugin_descriptor = {\n"
+         "    VV_PLUGIN_ABI_VERSION,\n" + blocks +
+         "    " + (p_.global_meshes.empty() ? std::string("nullptr") : std::string("vv_mesh_table")) + ", " + meshes + ",\n"
+         "    " + (p_.parameters.empty() ? std::string("nullptr") : std::string("vv_param_table")) + ", " + params + ",\n"
+         "    vv_entry_configure,\n"
+         "    vv_entry_reread,\n"
+         "    vv_entry_proxy,\n"
+         "    vv_entry_union_vvm,\n"
+         "    vv_entry_union_geometry,\n"
+         "    vv_entry_check,\n"
+         "    vv_entry_describe_vertex,\n"
+         "    vv_entry_file_objects,\n"
+         "    vv_entry_error_frames,\n"
+         "};\n";
     w_.generated(s);
   }
 
-  // Entry points over all the global meshes: their union (vvinterpreter
-  // --mesh A,B) and the neighbourhood check (--check).
+  // The global meshes (vv_plugin::meshes): name, size, .vvm writer, polygons.
+  std::string mesh_table() const {
+    if (p_.global_meshes.empty()) return "";
+    std::string s = "static const vv_mesh_entry vv_mesh_table[] = {\n";
+    for (const token* m : p_.global_meshes) {
+      std::string n(m->text);
+      s += "    {\"" + n + "\", []() -> std::size_t { return " + n + ".size(); },\n"
+           "     [](const char* vv_path) { return vv::plugin::write_vvm(vv_exchange, " + n + ", vv_path); },\n"
+           "     [](std::size_t vv_max_face, vv_geometry* vv_out) {\n"
+           "       return vv::plugin::geometry(vv_exchange, " + n + ", vv_max_face, vv_out);\n"
+           "     }},\n";
+    }
+    return s + "};\n";
+  }
+
+  // The functions over all the global meshes: their union (vvinterpreter
+  // --mesh A,B), the neighbourhood check (--check) and vertex descriptions.
   std::string mesh_set_entry_points() const {
     std::string s;
     if (p_.global_meshes.empty()) {
-      s += "VV_PLUGIN_EXPORT const char* vv_plugin_check() { return nullptr; }\n";
-      s += "VV_PLUGIN_EXPORT const char* vv_plugin_describe_vertex(unsigned, const char**) {\n"
+      s += "static const char* vv_entry_check() { return nullptr; }\n";
+      s += "static const char* vv_entry_describe_vertex(unsigned, const char**) {\n"
            "  return \"the model has no global mesh\";\n}\n";
-      s += "VV_PLUGIN_EXPORT const char* vv_plugin_union_vvm(const char* const*, std::size_t, const char*) {\n"
+      s += "static const char* vv_entry_union_vvm(const char* const*, std::size_t, const char*) {\n"
            "  return \"the model has no global mesh\";\n}\n";
-      s += "VV_PLUGIN_EXPORT const char* vv_plugin_union_geometry(const char* const*, std::size_t, std::size_t,\n"
-           "                                                      vv_geometry*) {\n"
+      s += "static const char* vv_entry_union_geometry(const char* const*, std::size_t, std::size_t, vv_geometry*) {\n"
            "  return \"the model has no global mesh\";\n}\n";
       return s;
     }
@@ -252,14 +261,13 @@ class emitter {
       s += "{\"" + n + "\", &" + n + "}, ";
     }
     s += "};\n";
-    s += "VV_PLUGIN_EXPORT const char* vv_plugin_check() { return vv::plugin::check(vv_exchange, vv_named_meshes); }\n";
-    s += "VV_PLUGIN_EXPORT const char* vv_plugin_describe_vertex(unsigned vv_label, const char** vv_text) {\n"
+    s += "static const char* vv_entry_check() { return vv::plugin::check(vv_exchange, vv_named_meshes); }\n";
+    s += "static const char* vv_entry_describe_vertex(unsigned vv_label, const char** vv_text) {\n"
          "  return vv::plugin::describe_vertex(vv_exchange, vv_named_meshes, vv_label, vv_text);\n}\n";
-    s += "VV_PLUGIN_EXPORT const char* vv_plugin_union_vvm(const char* const* vv_names, std::size_t vv_n,\n"
-         "                                                 const char* vv_path) {\n"
+    s += "static const char* vv_entry_union_vvm(const char* const* vv_names, std::size_t vv_n, const char* vv_path) {\n"
          "  return vv::plugin::union_vvm(vv_exchange, vv_named_meshes, vv_names, vv_n, vv_path);\n}\n";
-    s += "VV_PLUGIN_EXPORT const char* vv_plugin_union_geometry(const char* const* vv_names, std::size_t vv_n,\n"
-         "                                                      std::size_t vv_max_face, vv_geometry* vv_out) {\n"
+    s += "static const char* vv_entry_union_geometry(const char* const* vv_names, std::size_t vv_n,\n"
+         "                                           std::size_t vv_max_face, vv_geometry* vv_out) {\n"
          "  return vv::plugin::union_geometry(vv_exchange, vv_named_meshes, vv_names, vv_n, vv_max_face, vv_out);\n}\n";
     return s;
   }
