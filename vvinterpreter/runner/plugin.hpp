@@ -1,4 +1,4 @@
-// A loaded model plugin: the shared object and its entry points
+// A loaded model plugin: the shared object and its descriptor
 // (vvlib/vv/plugin/plugin.hpp). Unloading it destroys the model's state.
 #pragma once
 
