@@ -217,7 +217,7 @@ build_result build_model(const std::string& path, const build_settings& s) {
   std::string include = vvlib_include_dir();
   std::string stamp = headers_stamp(include);
   std::vector<std::string> flags = common_flags(s, include);
-  std::string model_dir = folder_of(path);
+  std::string model_dir = absolute_folder_of(path);
   std::string key = content_hash()
                         .add(vvc::version())
                         .add(config::cxx_compiler)
