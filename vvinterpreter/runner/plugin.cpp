@@ -92,7 +92,6 @@ std::unique_ptr<plugin> plugin::open(const std::string& path, std::string& error
     error = path + ": error: cannot load the model: " + why;
     return nullptr;
   }
-  dlerror();
   p->model_ = static_cast<const vv_plugin*>(dlsym(p->handle_, VV_PLUGIN_DESCRIPTOR_SYMBOL));
   if (!p->model_) {
     error = other_abi(p->handle_, path);
