@@ -8,6 +8,8 @@
 #include <filesystem>
 #include <string>
 
+#include <vv/io/files.hpp>
+
 namespace vvc {
 
 namespace {
@@ -200,7 +202,7 @@ class lexer {
   }
 
   void include(const token& at, const std::string& name) {
-    std::string path = name[0] == '/' ? name : f_.folder() + name;
+    std::string path = vv::io::resolve(f_.folder(), name);
     std::string file = same_file(path);
     for (const std::string& done : state_.once)
       if (done == file) return;

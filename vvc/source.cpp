@@ -2,9 +2,9 @@
 
 #include <cerrno>
 #include <cstring>
-#include <fstream>
-#include <sstream>
 #include <sys/stat.h>
+
+#include <vv/io/files.hpp>
 
 namespace vvc {
 
@@ -23,10 +23,7 @@ std::string_view source_file::line(int n) const {
   return std::string_view(text).substr(begin, end - begin);
 }
 
-std::string source_file::folder() const {
-  std::size_t slash = path.find_last_of('/');
-  return slash == std::string::npos ? std::string() : path.substr(0, slash + 1);
-}
+std::string source_file::folder() const { return vv::io::folder_of(path); }
 
 const source_file* source_set::load(const std::string& path, std::string* why) {
   // Only a regular file of a sensible size is a program: a folder would read
@@ -48,14 +45,9 @@ const source_file* source_set::load(const std::string& path, std::string* why) {
     if (why) *why = "it is larger than " + std::to_string(max_source_bytes >> 20) + " MiB";
     return nullptr;
   }
-  std::ifstream in(path, std::ios::binary);
-  if (!in) {
-    if (why) *why = std::strerror(errno);
-    return nullptr;
-  }
-  std::ostringstream ss;
-  ss << in.rdbuf();
-  std::string text = ss.str();
+  std::optional<std::string> read = vv::io::read_file(path, why);
+  if (!read) return nullptr;
+  std::string text = std::move(*read);
   // A UTF-8 byte-order mark, as some editors write: not part of the program.
   if (text.compare(0, 3, "\xEF\xBB\xBF") == 0) text.erase(0, 3);
   return add(path, std::move(text));

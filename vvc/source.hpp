@@ -17,7 +17,7 @@ struct source_file {
   source_file(std::string p, std::string t);
   //! Line n (1-based) without its newline.
   std::string_view line(int n) const;
-  //! The folder part of path ("" or ending in '/').
+  //! The folder of path as written ("" for a bare name): vv::io::folder_of.
   std::string folder() const;
 };
 

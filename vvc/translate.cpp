@@ -1,6 +1,6 @@
 #include "translate.hpp"
 
-#include <filesystem>
+#include <vv/io/files.hpp>
 
 #include "emitter.hpp"
 #include "lexer.hpp"
@@ -18,18 +18,12 @@ void run(translation& t, const source_file& file, std::string source_dir) {
   t.cpp = emit(p, emit_options{version(), std::move(source_dir)});
   t.ok = true;
 }
-
-std::string absolute_folder(const std::string& path) {
-  std::error_code ec;
-  std::filesystem::path p = std::filesystem::absolute(path, ec);
-  return ec ? std::string() : p.parent_path().string();
-}
 }  // namespace
 
 translation translate_file(const std::string& path, std::string* unreadable) {
   translation t;
   const source_file* f = t.sources.load(path, unreadable);
-  if (f) run(t, *f, absolute_folder(path));
+  if (f) run(t, *f, vv::io::absolute_folder_of(path));
   return t;
 }
 

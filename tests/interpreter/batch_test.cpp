@@ -15,6 +15,7 @@
 
 #include <vv/vv.hpp>
 #include <vv/io/mesh_io.hpp>
+#include <vv/plugin/plugin.hpp>
 
 #include <util/point.hpp>
 
@@ -711,21 +712,56 @@ TEST(CompileOnly, VersionedSharedLibraryNamesTheMissingEntryPoint) {
   EXPECT_TRUE(contains(r.err, "vv_plugin_")) << r.err;
 }
 
-// Requirement 5: editing the .vvp (a scratch copy) rebuilds it (no cache
-// line) and changes the output: here every position doubles.
-// Requirement: a plugin built for another ABI is refused with a message
-// that says so (not a crash).
+// Requirement: a plugin built for another ABI is refused with one line
+// naming the file and both versions (not a crash). A plugin from before the
+// descriptor exports vv_plugin_abi_version instead.
+const std::string this_abi = "this interpreter loads ABI " + std::to_string(VV_PLUGIN_ABI_VERSION);
+
+test_run::result load_built(const std::string& dir, const std::string& source) {
+  std::ofstream(dir + "other.cpp") << source;
+  test_run::result c = test_run::run({VV_CXX, "-shared", "-fPIC", dir + "other.cpp", "-o", dir + "other.so"});
+  EXPECT_EQ(c.status, 0) << c.err;
+  return vvi({"--batch", dir + "other.so"});
+}
+
 TEST(CompileOnly, PluginOfAnotherAbiIsRefused) {
   const std::string dir = fresh_dir("other_abi");
-  std::ofstream(dir + "old.cpp") << "extern \"C\" int vv_plugin_abi_version() { return 999; }\n";
-  test_run::result c = test_run::run({VV_CXX, "-shared", "-fPIC", dir + "old.cpp", "-o", dir + "old.so"});
-  ASSERT_EQ(c.status, 0) << c.err;
-  test_run::result r = vvi({"--batch", dir + "old.so"});
+  test_run::result r = load_built(dir, "extern \"C\" int vv_plugin_abi_version() { return 999; }\n");
   EXPECT_EQ(r.status, 1);
-  EXPECT_NE(r.err.find("built for plugin ABI 999"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find(dir + "other.so: error: the model was built for plugin ABI 999, " + this_abi), std::string::npos)
+      << r.err;
   EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
 }
 
+TEST(CompileOnly, PluginOfTheAbiBeforeTheDescriptorIsRefused) {
+  const std::string dir = fresh_dir("abi_4");
+  test_run::result r = load_built(dir, "extern \"C\" int vv_plugin_abi_version() { return 4; }\n"
+                                       "extern \"C\" const char* vv_plugin_start() { return 0; }\n");
+  EXPECT_EQ(r.status, 1);
+  EXPECT_NE(r.err.find(dir + "other.so: error: the model was built for plugin ABI 4, " + this_abi + "; rebuild it"),
+            std::string::npos)
+      << r.err;
+  EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+}
+
+// A descriptor of another version: only its first member (the version) is read.
+TEST(CompileOnly, DescriptorOfAnotherAbiIsRefused) {
+  const std::string dir = fresh_dir("other_descriptor");
+  test_run::result r = load_built(dir,
+                                  "struct later { int abi_version; void* entries[40]; };\n"
+                                  "extern \"C\" const later vv_plugin_descriptor;\n"
+                                  "extern \"C\" const later vv_plugin_descriptor = {"
+                                  + std::to_string(VV_PLUGIN_ABI_VERSION + 1) + ", {}};\n");
+  EXPECT_EQ(r.status, 1);
+  EXPECT_NE(r.err.find(dir + "other.so: error: the model was built for plugin ABI " +
+                       std::to_string(VV_PLUGIN_ABI_VERSION + 1) + ", " + this_abi),
+            std::string::npos)
+      << r.err;
+  EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+}
+
+// Requirement 5: editing the .vvp (a scratch copy) rebuilds it (no cache
+// line) and changes the output: here every position doubles.
 TEST(CompileOnly, EditingTheModelRebuildsItAndChangesTheOutput) {
   const std::string dir = fresh_dir("edit_rebuilds");
   const std::string model = loop_copy(dir, "edited.vvp");

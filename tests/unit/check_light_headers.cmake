@@ -2,7 +2,7 @@
 # it added about 4 s to the compile of every model that read a polygon
 # file); the polygon formats come compiled, in vv_formats. The compiler's
 # -H lists every header the preprocessor opens.
-foreach(header vv/model.hpp vv/io/mesh_io.hpp vv/vv.hpp)
+foreach(header vv/plugin/model.hpp vv/io/mesh_io.hpp vv/vv.hpp)
   string(MAKE_C_IDENTIFIER ${header} name)
   set(source ${WORK}/light_${name}.cpp)
   file(WRITE ${source} "#include <${header}>\n")

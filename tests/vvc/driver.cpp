@@ -11,7 +11,7 @@
 #include <iostream>
 #include <string>
 
-#include <vv/plugin.hpp>
+#include <vv/plugin/plugin.hpp>
 
 #include "vv_check.hpp"
 
@@ -29,33 +29,32 @@ int main(int argc, char** argv) {
       return 2;
     }
   }
-  if (vv_plugin_abi_version() != VV_PLUGIN_ABI_VERSION) {
-    std::cerr << "driver: plugin ABI " << vv_plugin_abi_version() << ", expected " << VV_PLUGIN_ABI_VERSION << "\n";
+  const vv_plugin& model = vv_plugin_descriptor;
+  if (model.abi_version != VV_PLUGIN_ABI_VERSION) {
+    std::cerr << "driver: plugin ABI " << model.abi_version << ", expected " << VV_PLUGIN_ABI_VERSION << "\n";
     return 2;
   }
   vv_plugin_settings settings{model_dir.c_str(), 42, 0, 0};
-  vv_plugin_configure(&settings);
+  model.configure(&settings);
 
   std::string error;
   auto run = [&](const char* name, const char* (*block)()) {
-    if (!error.empty()) return;
+    if (!error.empty() || !block) return;
     if (const char* e = block()) error = std::string(name) + ": " + e;
   };
-  run("start", vv_plugin_start);
-  for (unsigned i = 0; i < steps; ++i) run("step", vv_plugin_step);
-  run("end", vv_plugin_end);
+  run("start", model.start);
+  for (unsigned i = 0; i < steps; ++i) run("step", model.step);
+  run("end", model.end);
   if (!write_mesh.empty() && error.empty()) {
-    std::size_t count = 0;
-    const vv_mesh_entry* meshes = vv_plugin_meshes(&count);
     bool found = false;
-    for (std::size_t i = 0; i < count; ++i)
-      if (write_mesh == meshes[i].name) {
+    for (std::size_t i = 0; i < model.mesh_count; ++i)
+      if (write_mesh == model.meshes[i].name) {
         found = true;
-        if (const char* e = meshes[i].write_vvm(write_path.c_str())) error = e;
+        if (const char* e = model.meshes[i].write_vvm(write_path.c_str())) error = e;
       }
     if (!found) error = "no global mesh named " + write_mesh;
   }
-  run("close", vv_plugin_close);
+  run("close", model.close);
 
   if (!expected_error.empty()) {
     if (error.find(expected_error) != std::string::npos) {

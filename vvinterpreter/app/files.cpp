@@ -1,25 +1,13 @@
 #include "app/files.hpp"
 
-#include <vv/io/files.hpp>
-
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
-#include <fstream>
-#include <sstream>
 #include <unistd.h>
 
 namespace vvi {
 
 namespace fs = std::filesystem;
-
-std::optional<std::string> read_file(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) return std::nullopt;
-  std::ostringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
-}
 
 bool write_file(const std::string& path, const std::string& text) {
   try {
@@ -28,14 +16,6 @@ bool write_file(const std::string& path, const std::string& text) {
   } catch (const std::exception&) {
     return false;
   }
-}
-
-std::string folder_of(const std::string& path) {
-  std::error_code ec;
-  fs::path p = fs::absolute(path, ec);
-  if (ec) p = path;
-  fs::path parent = p.parent_path();
-  return parent.empty() ? std::string(".") : parent.string();
 }
 
 std::string executable_dir() {

@@ -1,6 +1,9 @@
 #include "app/options.hpp"
 
+#include <CLI/CLI.hpp>
+
 #include <cstdlib>
+#include <functional>
 #include <string>
 
 #include "build/build_config.hpp"
@@ -59,140 +62,174 @@ const char* usage_text =
 
 namespace {
 
+// Thrown by an option that cannot take its value, with the reason.
+struct usage_error {
+  std::string message;
+};
+// Thrown by --help and --version, with the text to print.
+struct answered {
+  std::string text;
+};
+
 bool to_unsigned(const std::string& s, unsigned long long& out) {
   if (s.empty() || s.find_first_not_of("0123456789") != std::string::npos || s.size() > 19) return false;
   out = std::strtoull(s.c_str(), nullptr, 10);
   return true;
 }
 
-// The options that take a text (a path).
-std::string* text_option(options& o, const std::string& name) {
-  if (name == "--export") return &o.export_path;
-  if (name == "--screenshot") return &o.screenshot;
-  if (name == "--script") return &o.script;
-  if (name == "--plots") return &o.plots_path;
-  if (name == "--color-by") return &o.color_by;
-  if (name == "--frames") return &o.frames;
-  if (name == "--cache") return &o.cache;
-  return nullptr;
+// The value of a number option, or a usage error saying what it needs.
+unsigned long long number(const std::string& v, unsigned long long lo, unsigned long long hi, const char* need) {
+  unsigned long long n = 0;
+  if (!to_unsigned(v, n) || n < lo || n > hi) throw usage_error{need};
+  return n;
+}
+
+// An option with one value. `take` runs at each occurrence, in command-line
+// order (a later one wins, or adds, as take decides); a missing value
+// reaches it as "" so that each option says itself what it needs.
+void with_value(CLI::App& app, const std::string& name, std::function<void(const std::string&)> take) {
+  app.add_option_function<std::string>(name, std::move(take))->expected(0, 1)->trigger_on_parse();
+}
+
+void flag(CLI::App& app, const std::string& name, bool& set) {
+  app.add_flag_callback(name, [&set] { set = true; })->trigger_on_parse();
+}
+
+// An option naming a file or a folder (any text but "").
+void text(CLI::App& app, const std::string& name, std::string& out) {
+  with_value(app, name, [name, &out](const std::string& v) {
+    if (v.empty()) throw usage_error{name + " needs a value"};
+    out = v;
+  });
+}
+
+void answers(CLI::App& app) {
+  app.set_help_flag();  // usage_text is the help: it says more than a generated one would
+  app.add_flag_callback("--help,-h", [] {
+       throw answered{std::string(usage_text) + "\nscript commands (--script FILE):\n" + script_help};
+     })->trigger_on_parse();
+  app.add_flag_callback("--version", [] {
+       throw answered{std::string("vvinterpreter ") + config::version + "\n"};
+     })->trigger_on_parse();
+}
+
+void switches(CLI::App& app, options& o) {
+  flag(app, "--batch", o.batch);
+  flag(app, "--compile-only", o.compile_only);
+  flag(app, "--strict", o.strict);
+  flag(app, "--list-params", o.list_params);
+  flag(app, "--check", o.check);
+  flag(app, "--quiet", o.quiet);
+  flag(app, "--end", o.end_block);
+  flag(app, "--debug", o.debug);
+  flag(app, "--in-process", o.in_process);
+}
+
+void numbers(CLI::App& app, options& o) {
+  with_value(app, "--steps", [&o](const std::string& v) {
+    o.steps = static_cast<unsigned>(number(v, 0, 100000000, "--steps needs a count"));
+  });
+  with_value(app, "--max-face", [&o](const std::string& v) {
+    o.max_face = number(v, 3, ~0ull, "--max-face needs a number of corners (3 or more)");
+  });
+  with_value(app, "--seed", [&o](const std::string& v) { o.seed = number(v, 0, ~0ull, "--seed needs a non-negative number"); });
+  with_value(app, "--opt", [&o](const std::string& v) {
+    o.optimization = static_cast<int>(number(v, 0, 3, "--opt needs a level from 0 to 3"));
+  });
+  with_value(app, "--pick", [&o](const std::string& v) {
+    o.picks.push_back(static_cast<unsigned>(number(v, 1, 0xffffffffull, "--pick needs a vertex label (1 or more)")));
+  });
+  with_value(app, "--step-timeout", [&o](const std::string& v) {
+    if (v.empty()) throw usage_error{"--step-timeout needs a number of seconds"};
+    char* end = nullptr;
+    o.step_timeout = std::strtod(v.c_str(), &end);
+    if (*end || !(o.step_timeout > 0) || o.step_timeout > 1e6)
+      throw usage_error{"--step-timeout needs a number of seconds greater than 0"};
+  });
+}
+
+void view_options(CLI::App& app, options& o) {
+  with_value(app, "--size", [&o](const std::string& v) {
+    const char* need = "--size needs WIDTHxHEIGHT, e.g. 800x600 (at most 16384 each way)";
+    if (v.empty()) throw usage_error{"--size needs WIDTHxHEIGHT"};
+    std::size_t x = v.find('x');
+    if (x == std::string::npos) throw usage_error{need};
+    o.width = static_cast<int>(number(v.substr(0, x), 1, 16384, need));
+    o.height = static_cast<int>(number(v.substr(x + 1), 1, 16384, need));
+  });
+  // Two values; a negative angle is a value, not an option.
+  app.add_option_function<std::vector<std::string>>("--view", [&o](const std::vector<std::string>& v) {
+       const char* need = "--view needs two angles in degrees";
+       if (v.size() != 2 || v[0].empty() || v[1].empty()) throw usage_error{need};
+       char* end1 = nullptr;
+       char* end2 = nullptr;
+       o.view_yaw = std::strtod(v[0].c_str(), &end1);
+       o.view_pitch = std::strtod(v[1].c_str(), &end2);
+       if (*end1 || *end2) throw usage_error{need};
+     })->expected(0, 2)->allow_extra_args(false)->trigger_on_parse();
+}
+
+void model_inputs(CLI::App& app, options& o) {
+  with_value(app, "--set", [&o](const std::string& v) {
+    std::size_t eq = v.find('=');
+    if (eq == std::string::npos || eq == 0) throw usage_error{"--set needs NAME=VALUE, e.g. --set rate=0.5"};
+    o.parameter_values.emplace_back(v.substr(0, eq), v.substr(eq + 1));
+  });
+  with_value(app, "--mesh", [&o](const std::string& v) {
+    if (v.empty()) throw usage_error{"--mesh needs a value"};
+    o.meshes.clear();
+    for (std::size_t from = 0, comma; from <= v.size(); from = comma + 1) {
+      comma = v.find(',', from);
+      if (comma == std::string::npos) comma = v.size();
+      if (comma == from) throw usage_error{"--mesh needs names separated by commas, e.g. --mesh J,C"};
+      o.meshes.push_back(v.substr(from, comma - from));
+    }
+  });
+  text(app, "--export", o.export_path);
+  text(app, "--screenshot", o.screenshot);
+  text(app, "--script", o.script);
+  text(app, "--plots", o.plots_path);
+  text(app, "--color-by", o.color_by);
+  text(app, "--frames", o.frames);
+  text(app, "--cache", o.cache);
+}
+
+// What the options say together.
+void check_whole(const CLI::App& app, const std::vector<std::string>& models, options& o) {
+  for (const std::string& a : app.remaining())
+    if (!a.empty() && a[0] == '-') throw usage_error{"unknown option " + a};
+  if (models.size() > 1) throw usage_error{"more than one model (" + models[0] + " and " + models[1] + ")"};
+  if (models.empty() || models[0].empty()) throw usage_error{"no model given"};
+  o.model = models[0];
+  if (o.list_params) o.batch = true;  // headless, and supervised like a batch run
+  if (o.batch && !o.script.empty()) throw usage_error{"--script drives the viewer; it cannot be used with --batch"};
 }
 
 }  // namespace
 
 parse_result parse_options(int argc, const char* const* argv) {
   parse_result r;
-  options& o = r.opts;
-  auto fail = [&](const std::string& msg) {
-    r.ok = false;
-    r.message = "vvinterpreter: " + msg + "\n" + usage_text;
-    return r;
-  };
-  for (int i = 1; i < argc; ++i) {
-    std::string a = argv[i];
-    auto value = [&](std::string& out) {
-      if (i + 1 >= argc) return false;
-      out = argv[++i];
-      return true;
-    };
-    auto number = [&](unsigned long long& out) {
-      std::string v;
-      return value(v) && to_unsigned(v, out);
-    };
-    unsigned long long n = 0;
-    std::string v;
-    if (a == "--help" || a == "-h") {
-      r.ok = r.exit_now = true;
-      r.message = std::string(usage_text) + "\nscript commands (--script FILE):\n" + script_help;
-      return r;
-    } else if (a == "--version") {
-      r.ok = r.exit_now = true;
-      r.message = std::string("vvinterpreter ") + config::version + "\n";
-      return r;
-    } else if (a == "--batch") {
-      o.batch = true;
-    } else if (a == "--compile-only") {
-      o.compile_only = true;
-    } else if (a == "--strict") {
-      o.strict = true;
-    } else if (a == "--list-params") {
-      o.list_params = true;
-    } else if (a == "--set") {
-      std::size_t eq = std::string::npos;
-      if (!value(v) || (eq = v.find('=')) == std::string::npos || eq == 0)
-        return fail("--set needs NAME=VALUE, e.g. --set rate=0.5");
-      o.parameter_values.emplace_back(v.substr(0, eq), v.substr(eq + 1));
-    } else if (a == "--check") {
-      o.check = true;
-    } else if (a == "--quiet") {
-      o.quiet = true;
-    } else if (a == "--end") {
-      o.end_block = true;
-    } else if (a == "--debug") {
-      o.debug = true;
-    } else if (a == "--in-process") {
-      o.in_process = true;
-    } else if (a == "--step-timeout") {
-      char* end = nullptr;
-      if (!value(v)) return fail("--step-timeout needs a number of seconds");
-      o.step_timeout = std::strtod(v.c_str(), &end);
-      if (v.empty() || *end || !(o.step_timeout > 0) || o.step_timeout > 1e6)
-        return fail("--step-timeout needs a number of seconds greater than 0");
-    } else if (a == "--mesh") {
-      if (!value(v) || v.empty()) return fail("--mesh needs a value");
-      o.meshes.clear();
-      std::size_t from = 0;
-      for (std::size_t comma; from <= v.size(); from = comma + 1) {
-        comma = v.find(',', from);
-        if (comma == std::string::npos) comma = v.size();
-        if (comma == from) return fail("--mesh needs names separated by commas, e.g. --mesh J,C");
-        o.meshes.push_back(v.substr(from, comma - from));
-      }
-    } else if (a == "--pick") {
-      if (!number(n) || n == 0 || n > 0xffffffffull) return fail("--pick needs a vertex label (1 or more)");
-      o.picks.push_back(static_cast<unsigned>(n));
-    } else if (a == "--steps") {
-      if (!number(n) || n > 100000000) return fail("--steps needs a count");
-      o.steps = static_cast<unsigned>(n);
-    } else if (a == "--max-face") {
-      if (!number(n) || n < 3) return fail("--max-face needs a number of corners (3 or more)");
-      o.max_face = n;
-    } else if (a == "--seed") {
-      if (!number(n)) return fail("--seed needs a non-negative number");
-      o.seed = n;
-    } else if (a == "--opt") {
-      if (!number(n) || n > 3) return fail("--opt needs a level from 0 to 3");
-      o.optimization = static_cast<int>(n);
-    } else if (a == "--size") {
-      if (!value(v)) return fail("--size needs WIDTHxHEIGHT");
-      std::size_t x = v.find('x');
-      unsigned long long w = 0, h = 0;
-      if (x == std::string::npos || !to_unsigned(v.substr(0, x), w) || !to_unsigned(v.substr(x + 1), h) ||
-          w < 1 || h < 1 || w > 16384 || h > 16384)
-        return fail("--size needs WIDTHxHEIGHT, e.g. 800x600 (at most 16384 each way)");
-      o.width = static_cast<int>(w), o.height = static_cast<int>(h);
-    } else if (a == "--view") {
-      std::string y, p;
-      char* end1 = nullptr;
-      char* end2 = nullptr;
-      if (!value(y) || !value(p)) return fail("--view needs two angles in degrees");
-      o.view_yaw = std::strtod(y.c_str(), &end1);
-      o.view_pitch = std::strtod(p.c_str(), &end2);
-      if (*end1 || *end2 || y.empty() || p.empty()) return fail("--view needs two angles in degrees");
-    } else if (std::string* text = text_option(o, a)) {
-      if (!value(v) || v.empty()) return fail(a + " needs a value");
-      *text = v;
-    } else if (!a.empty() && a[0] == '-') {
-      return fail("unknown option " + a);
-    } else if (o.model.empty()) {
-      o.model = a;
-    } else {
-      return fail("more than one model (" + o.model + " and " + a + ")");
-    }
+  CLI::App app("", "vvinterpreter");
+  std::vector<std::string> models;
+  answers(app);
+  switches(app, r.opts);
+  numbers(app, r.opts);
+  view_options(app, r.opts);
+  model_inputs(app, r.opts);
+  app.add_option("model", models);
+  app.allow_extras();  // unknown options are named below, as before
+  try {
+    app.parse(argc, argv);
+    check_whole(app, models, r.opts);
+    r.ok = true;
+  } catch (const answered& a) {
+    r.ok = r.exit_now = true;
+    r.message = a.text;
+  } catch (const usage_error& e) {
+    r.message = "vvinterpreter: " + e.message + "\n" + usage_text;
+  } catch (const CLI::ParseError& e) {
+    r.message = std::string("vvinterpreter: ") + e.what() + "\n" + usage_text;
   }
-  if (o.model.empty()) return fail("no model given");
-  if (o.list_params) o.batch = true;  // headless, and supervised like a batch run
-  if (o.batch && !o.script.empty()) return fail("--script drives the viewer; it cannot be used with --batch");
-  r.ok = true;
   return r;
 }
 

@@ -68,7 +68,7 @@ std::string screenshot(const options& o, model_runner& runner) {
   error = runner.geometry(g, o.color_by);
   if (!error.empty()) return error;
   if (!o.color_by.empty() && !g.values) return no_such_property(o, g);
-  if (!g.positions && !(model && model->has_block("render")))
+  if (!g.positions && !(model && model->has_block(&vv_plugin::render)))
     return o.screenshot + ": nothing to draw: the vertices of the model's mesh have no 'pos' property "
                           "(give them one, or draw them in a render block)";
   drawing.update(g);

@@ -65,24 +65,24 @@ std::string join(const std::vector<std::string>& argv) {
   return s;
 }
 
-// Builds the precompiled vv/model.hpp for these flags, once per cache.
+// Builds the precompiled vv/plugin/model.hpp for these flags, once per cache.
 std::string precompiled_header_dir(const build_settings& s, const std::string& include,
                                    const std::string& stamp, std::string& error) {
   std::vector<std::string> flags = common_flags(s, include);
   std::string key = content_hash().add(config::cxx_compiler).add(join(flags)).add(stamp).hex();
   std::string dir = s.cache_dir + "/pch/" + key;
-  std::string gch = dir + "/vv/model.hpp.gch";
+  std::string gch = dir + "/vv/plugin/model.hpp.gch";
   if (fs::exists(gch)) return dir;
   std::error_code ec;
-  fs::create_directories(dir + "/vv", ec);
+  fs::create_directories(dir + "/vv/plugin", ec);
   std::string tmp = gch + ".tmp" + std::to_string(getpid());
   std::vector<std::string> argv = {config::cxx_compiler};
   argv.insert(argv.end(), flags.begin(), flags.end());
-  argv.insert(argv.end(), {"-x", "c++-header", include + "/vv/model.hpp", "-o", tmp});
+  argv.insert(argv.end(), {"-x", "c++-header", include + "/vv/plugin/model.hpp", "-o", tmp});
   process_result r = run_process(argv);
   if (r.status != 0) {
     fs::remove(tmp, ec);
-    error = "cannot precompile vv/model.hpp:\n" + r.output;
+    error = "cannot precompile vv/plugin/model.hpp:\n" + r.output;
     return "";
   }
   fs::rename(tmp, gch, ec);  // another process may have won the race: either copy is good
@@ -117,7 +117,7 @@ std::string vvlib_include_dir() {
   fs::path bin = executable_dir();
   fs::path installed = bin.parent_path() / "include" / "vv-1";
   std::error_code ec;
-  if (bin.filename() == "bin" && fs::exists(installed / "vv" / "model.hpp", ec)) return installed.string();
+  if (bin.filename() == "bin" && fs::exists(installed / "vv" / "plugin" / "model.hpp", ec)) return installed.string();
   return config::build_tree_include;
 }
 
@@ -217,7 +217,7 @@ build_result build_model(const std::string& path, const build_settings& s) {
   std::string include = vvlib_include_dir();
   std::string stamp = headers_stamp(include);
   std::vector<std::string> flags = common_flags(s, include);
-  std::string model_dir = folder_of(path);
+  std::string model_dir = absolute_folder_of(path);
   std::string key = content_hash()
                         .add(vvc::version())
                         .add(config::cxx_compiler)

@@ -299,16 +299,16 @@ bool draw_frame(session* model, const mesh_drawing* fallback, const camera& cam,
   glLoadMatrixd(glm::value_ptr(cam.view()));
 
   bool ok = true;
-  if (model && model->has_block("render")) {
+  if (model && model->has_block(&vv_plugin::render)) {
     if (!model->render()) error = model->error(), ok = false;
   } else if (fallback) {
     fallback->draw(style, edges_visible(*fallback, style, cam, height));
   }
-  if (ok && model && model->has_block("render_screen")) {
+  if (ok && model && model->has_block(&vv_plugin::render_screen)) {
     use_pixel_coordinates(width, height);
     if (!model->render_screen()) error = model->error(), ok = false;
   }
-  if (ok && fallback && fallback->has_values() && !(model && model->has_block("render")))
+  if (ok && fallback && fallback->has_values() && !(model && model->has_block(&vv_plugin::render)))
     draw_colour_bar(width, height);
   glDisable(GL_LIGHTING);
   return ok;

@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include <vv/plugin.hpp>
+#include <vv/plugin/plugin.hpp>
 
 #include "render/camera.hpp"
 

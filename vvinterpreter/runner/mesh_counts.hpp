@@ -5,7 +5,7 @@
 
 #include <cstddef>
 
-#include <vv/plugin.hpp>
+#include <vv/plugin/plugin.hpp>
 
 namespace vvi {
 

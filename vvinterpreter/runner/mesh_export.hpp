@@ -4,7 +4,7 @@
 
 #include <string>
 
-#include <vv/plugin.hpp>
+#include <vv/plugin/plugin.hpp>
 
 namespace vvi {
 

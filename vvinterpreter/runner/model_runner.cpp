@@ -17,7 +17,7 @@ build_settings build_settings_for(const options& o, bool force) {
 session_settings session_settings_for(const options& o) {
   session_settings s;
   // A plugin given on its own knows the folder it was translated from.
-  if (!is_plugin_file(o.model)) s.model_dir = folder_of(o.model);
+  if (!is_plugin_file(o.model)) s.model_dir = absolute_folder_of(o.model);
   s.seed = o.seed;
   s.strict = o.strict;
   s.check = o.check;
@@ -145,7 +145,7 @@ std::string model_runner::geometry(vv_geometry& out, const std::string& value_fi
   if (std::string e = unknown_mesh(*model_, o_.model, names); !e.empty()) return e;
   if (names.size() > 1) {
     std::vector<const char*> c = c_names(names);
-    const char* e = model_->raw().union_geometry(c.data(), c.size(), max_face(), &out);
+    const char* e = model_->model().union_geometry(c.data(), c.size(), max_face(), &out);
     return e ? e : "";
   }
   const vv_mesh_entry* m = model_->mesh(names.empty() ? "" : names[0]);
@@ -157,7 +157,7 @@ std::string model_runner::geometry(vv_geometry& out, const std::string& value_fi
 std::string model_runner::describe_vertex(unsigned label, std::string& text) const {
   if (!model_) return "no model is loaded";
   const char* described = nullptr;
-  if (const char* e = model_->raw().describe_vertex(label, &described)) return o_.model + ": pick " + std::to_string(label) + ": " + e;
+  if (const char* e = model_->model().describe_vertex(label, &described)) return o_.model + ": pick " + std::to_string(label) + ": " + e;
   text = described;
   return "";
 }
@@ -165,7 +165,7 @@ std::string model_runner::describe_vertex(unsigned label, std::string& text) con
 std::vector<std::string> model_runner::file_objects() const {
   std::vector<std::string> out;
   if (!model_) return out;
-  std::string lines = model_->raw().file_objects();
+  std::string lines = model_->model().file_objects();
   for (std::size_t at = 0, end; (end = lines.find('\n', at)) != std::string::npos; at = end + 1)
     out.push_back(lines.substr(at, end - at));
   return out;
@@ -179,11 +179,11 @@ std::string model_runner::export_to(const std::string& path, const std::vector<s
   if (names.size() > 1) {
     std::vector<const char*> c = c_names(names);
     if (is_vvm_path(path)) {
-      const char* e = model_->raw().union_vvm(c.data(), c.size(), path.c_str());
+      const char* e = model_->model().union_vvm(c.data(), c.size(), path.c_str());
       return e ? e : "";
     }
     vv_geometry g{};
-    if (const char* e = model_->raw().union_geometry(c.data(), c.size(), max_face(), &g)) return e;
+    if (const char* e = model_->model().union_geometry(c.data(), c.size(), max_face(), &g)) return e;
     return export_polygons(g, path, "meshes " + listed(names));
   }
   const vv_mesh_entry* m = model_->mesh(names.empty() ? "" : names[0]);

@@ -68,10 +68,9 @@ std::string parse_number(const vv_param_entry& p, const std::string& text, doubl
 }  // namespace
 
 std::vector<const vv_param_entry*> parameters_of(const session& s) {
-  std::size_t n = 0;
-  const vv_param_entry* table = s.raw().params(&n);
+  const vv_plugin& m = s.model();
   std::vector<const vv_param_entry*> out;
-  for (std::size_t i = 0; i < n; ++i) out.push_back(&table[i]);
+  for (std::size_t i = 0; i < m.param_count; ++i) out.push_back(&m.params[i]);
   return out;
 }
 

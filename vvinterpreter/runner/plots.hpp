@@ -5,7 +5,7 @@
 
 #include <string>
 
-#include <vv/proxy.hpp>
+#include <vv/plugin/proxy.hpp>
 
 namespace vvi {
 

@@ -51,6 +51,19 @@ std::string private_copy(const std::string& path, std::string& error) {
   return ec ? std::string() : copy;
 }
 
+std::string abi_mismatch(const std::string& path, int version) {
+  return path + ": error: the model was built for plugin ABI " + std::to_string(version) +
+         ", this interpreter loads ABI " + std::to_string(VV_PLUGIN_ABI_VERSION) + "; rebuild it";
+}
+
+// A model built before the descriptor (plugin ABI 4 and older) exported
+// one function per entry, the first of them its version: name both
+// versions rather than call it "not a vv model". "" when it is none.
+std::string other_abi(void* handle, const std::string& path) {
+  auto version = reinterpret_cast<int (*)()>(dlsym(handle, "vv_plugin_abi_version"));
+  return version ? abi_mismatch(path, version()) : std::string();
+}
+
 std::string dlerror_text() {
   const char* why = dlerror();
   return why ? why : "unknown reason";
@@ -79,46 +92,17 @@ std::unique_ptr<plugin> plugin::open(const std::string& path, std::string& error
     error = path + ": error: cannot load the model: " + why;
     return nullptr;
   }
-  bool ok = true;
-  auto bind = [&](auto& fn, const char* name) {
-    if (!ok) return;
-    dlerror();
-    void* sym = dlsym(p->handle_, name);
-    if (!sym) {
-      ok = false;
-      const char* why = dlerror();
-      error = path + ": error: not a vv model: the entry point " + name + " is missing" +
-              (why ? std::string(" (") + why + ")" : std::string());
-      return;
-    }
-    fn = reinterpret_cast<std::remove_reference_t<decltype(fn)>>(sym);
-  };
-  bind(p->abi_version, "vv_plugin_abi_version");
-  if (ok && p->abi_version() != VV_PLUGIN_ABI_VERSION) {
-    error = path + ": error: the model was built for plugin ABI " + std::to_string(p->abi_version()) +
-            ", this interpreter loads ABI " + std::to_string(VV_PLUGIN_ABI_VERSION) + "; rebuild it";
+  p->model_ = static_cast<const vv_plugin*>(dlsym(p->handle_, VV_PLUGIN_DESCRIPTOR_SYMBOL));
+  if (!p->model_) {
+    error = other_abi(p->handle_, path);
+    if (error.empty())
+      error = path + ": error: not a vv model: the entry point " VV_PLUGIN_DESCRIPTOR_SYMBOL " is missing";
     return nullptr;
   }
-  bind(p->configure, "vv_plugin_configure");
-  bind(p->start, "vv_plugin_start");
-  bind(p->step, "vv_plugin_step");
-  bind(p->end, "vv_plugin_end");
-  bind(p->close, "vv_plugin_close");
-  bind(p->render_init, "vv_plugin_render_init");
-  bind(p->render, "vv_plugin_render");
-  bind(p->render_screen, "vv_plugin_render_screen");
-  bind(p->reread, "vv_plugin_reread");
-  bind(p->has_block, "vv_plugin_has_block");
-  bind(p->proxy, "vv_plugin_proxy");
-  bind(p->meshes, "vv_plugin_meshes");
-  bind(p->union_vvm, "vv_plugin_union_vvm");
-  bind(p->union_geometry, "vv_plugin_union_geometry");
-  bind(p->error_frames, "vv_plugin_error_frames");
-  bind(p->check, "vv_plugin_check");
-  bind(p->params, "vv_plugin_params");
-  bind(p->describe_vertex, "vv_plugin_describe_vertex");
-  bind(p->file_objects, "vv_plugin_file_objects");
-  if (!ok) return nullptr;
+  if (p->model_->abi_version != VV_PLUGIN_ABI_VERSION) {
+    error = abi_mismatch(path, p->model_->abi_version);
+    return nullptr;
+  }
   return p;
 }
 

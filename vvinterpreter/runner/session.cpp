@@ -15,7 +15,7 @@ std::unique_ptr<session> session::load(const std::string& plugin_path, const ses
   std::unique_ptr<plugin> p = plugin::open(plugin_path, error);
   if (!p) return nullptr;
   vv_plugin_settings settings{s.model_dir.c_str(), s.seed, s.strict ? 1 : 0, s.check ? 1 : 0};
-  p->configure(&settings);
+  p->model().configure(&settings);
   return std::unique_ptr<session>(new session(std::move(p), s.check));
 }
 
@@ -35,7 +35,7 @@ std::vector<std::string> own_maps() {
 // frame of the model's own source.
 std::string session::locate(const std::string& message) const {
   std::size_t n = 0;
-  const void* const* frames = plugin_->error_frames(&n);
+  const void* const* frames = plugin_->model().error_frames(&n);
   if (n == 0) return message;
   std::vector<std::uintptr_t> calls;
   for (std::size_t i = 0; i < n; ++i) calls.push_back(reinterpret_cast<std::uintptr_t>(frames[i]) - 1);
@@ -46,8 +46,11 @@ std::string session::locate(const std::string& message) const {
 }
 
 bool session::run(const char* block, plugin::block_fn fn, unsigned step, bool announce) {
+  // A block the program lacks: nothing to draw, but start, step, end and
+  // close are still announced (a step without a step block still counts).
+  if (!fn && !announce) return true;
   fault_guard::begin(block, step, announce);
-  const char* e = fn();
+  const char* e = fn ? fn() : nullptr;
   fault_guard::finish(announce);
   if (e) {
     error_ = locate(e);
@@ -60,7 +63,7 @@ bool session::run(const char* block, plugin::block_fn fn, unsigned step, bool an
 
 bool session::check_neighbourhoods(const std::string& after) {
   if (!check_) return true;
-  const char* broken = plugin_->check();
+  const char* broken = plugin_->model().check();
   if (!broken) return true;
   error_ = std::string(broken) + " (after " + after + ")";
   return false;
@@ -70,24 +73,22 @@ bool session::check_neighbourhoods(const std::string& after) {
 // the last step's number in end.
 bool session::start() {
   proxy().plot_step = 0;
-  return run("start", plugin_->start) && check_neighbourhoods("start");
+  return run("start", plugin_->model().start) && check_neighbourhoods("start");
 }
 bool session::end() {
   proxy().plot_step = steps_;
-  return run("end", plugin_->end);
+  return run("end", plugin_->model().end);
 }
-bool session::reread() { return run("reread", plugin_->reread); }
+bool session::reread() { return run("reread", plugin_->model().reread); }
 // Drawing is not timed (it is not announced): it runs every frame.
-bool session::render_init() { return !has_block("render_init") || run("render_init", plugin_->render_init, 0, false); }
-bool session::render() { return !has_block("render") || run("render", plugin_->render, 0, false); }
-bool session::render_screen() {
-  return !has_block("render_screen") || run("render_screen", plugin_->render_screen, 0, false);
-}
+bool session::render_init() { return run("render_init", plugin_->model().render_init, 0, false); }
+bool session::render() { return run("render", plugin_->model().render, 0, false); }
+bool session::render_screen() { return run("render_screen", plugin_->model().render_screen, 0, false); }
 
 bool session::step() {
   proxy().plot_step = steps_ + 1;
   auto t = std::chrono::steady_clock::now();
-  bool ok = run("step", plugin_->step, steps_ + 1);
+  bool ok = run("step", plugin_->model().step, steps_ + 1);
   last_step_ms_ = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t).count();
   if (ok) ++steps_;
   return ok && check_neighbourhoods("step " + std::to_string(steps_));
@@ -96,16 +97,15 @@ bool session::step() {
 void session::close() {
   if (closed_) return;
   closed_ = true;
-  run("close", plugin_->close);
+  run("close", plugin_->model().close);
 }
 
 session::~session() { close(); }
 
 std::vector<const vv_mesh_entry*> session::meshes() const {
-  std::size_t n = 0;
-  const vv_mesh_entry* table = plugin_->meshes(&n);
+  const vv_plugin& m = plugin_->model();
   std::vector<const vv_mesh_entry*> out;
-  for (std::size_t i = 0; i < n; ++i) out.push_back(&table[i]);
+  for (std::size_t i = 0; i < m.mesh_count; ++i) out.push_back(&m.meshes[i]);
   return out;
 }
 

@@ -46,9 +46,11 @@ class session {
   std::vector<const vv_mesh_entry*> meshes() const;
   //! A global mesh by name, or the first one when name is empty.
   const vv_mesh_entry* mesh(const std::string& name) const;
-  vv::proxy& proxy() const { return *plugin_->proxy(); }
-  plugin& raw() const { return *plugin_; }
-  bool has_block(const char* name) const { return plugin_->has_block(name) != 0; }
+  vv::proxy& proxy() const { return *plugin_->model().proxy(); }
+  //! The model's descriptor (vv/plugin/plugin.hpp).
+  const vv_plugin& model() const { return plugin_->model(); }
+  //! Whether the program has this block, e.g. has_block(&vv_plugin::render).
+  bool has_block(plugin::block_fn vv_plugin::*block) const { return plugin_->model().*block != nullptr; }
 
  private:
   session(std::unique_ptr<plugin> p, bool check) : plugin_(std::move(p)), check_(check) {}

@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include <vv/plugin.hpp>
+#include <vv/plugin/plugin.hpp>
 
 #include "runner/mesh_counts.hpp"
 

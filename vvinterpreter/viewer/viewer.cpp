@@ -566,7 +566,7 @@ class viewer {
 
   // The numbers at the ends of the colour bar (drawn by draw_frame).
   void label_colour_bar() {
-    if (!drawing_.has_values() || (runner_.model() && runner_.model()->has_block("render"))) return;
+    if (!drawing_.has_values() || (runner_.model() && runner_.model()->has_block(&vv_plugin::render))) return;
     ImVec2 size = ImGui::GetIO().DisplaySize;
     ImDrawList* d = ImGui::GetForegroundDrawList();
     char text[64];

@@ -13,6 +13,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iterator>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <system_error>
@@ -20,6 +21,7 @@
 #include <vector>
 
 #include <vv/error.hpp>
+#include <vv/io/files.hpp>
 
 namespace util::vlab {
 
@@ -30,11 +32,10 @@ inline std::string read_bytes(const std::string& path) {
   // An ifstream opens a directory without complaint and reads nothing.
   if (std::filesystem::is_directory(path, ec))
     throw vv::error(path, 0, "cannot open: it is a directory");
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw vv::error(path, 0, std::string("cannot open: ") + std::strerror(errno));
-  std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  if (in.bad()) throw vv::error(path, 0, "cannot read the file");
-  return bytes;
+  std::string why;
+  std::optional<std::string> bytes = vv::io::read_file(path, &why);
+  if (!bytes) throw vv::error(path, 0, "cannot open: " + why);
+  return std::move(*bytes);
 }
 
 //! Writes by way of a temporary file renamed over the target, so that a

@@ -32,7 +32,7 @@
 #include "detail/neighbourhood.hpp"
 #include "error.hpp"
 #include "traits.hpp"
-#include "proxy.hpp"
+#include "plugin/proxy.hpp"
 
 namespace vv {
 

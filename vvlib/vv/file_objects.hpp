@@ -19,7 +19,7 @@
 #include <vector>
 
 #include "io/files.hpp"
-#include "proxy.hpp"
+#include "plugin/proxy.hpp"
 
 namespace vv {
 

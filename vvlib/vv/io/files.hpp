@@ -1,5 +1,6 @@
-// Whole-file reading, atomic writing and path resolution shared by the
-// mesh readers and writers.
+// Whole-file reading, atomic writing and path resolution: the one copy
+// that vvlib's readers and writers, the translator (vvc) and the host
+// (vvinterpreter) share. Needs nothing but the standard library.
 #pragma once
 
 #include <fcntl.h>
@@ -12,6 +13,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iterator>
+#include <optional>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -46,13 +48,38 @@ class text_file {
   std::vector<std::size_t> line_starts_;
 };
 
-inline text_file read_text_file(const std::string& path) {
+//! A whole file's bytes, or std::nullopt with the system's reason in *why
+//! ("No such file or directory").
+inline std::optional<std::string> read_file(const std::string& path, std::string* why = nullptr) {
+  errno = 0;
   std::ifstream in(path, std::ios::binary);
-  if (!in) throw error(path, 0, std::string("cannot open file: ") + std::strerror(errno));
-  std::ostringstream ss;
-  ss << in.rdbuf();
-  if (in.bad()) throw error(path, 0, "read error");
-  return text_file(path, ss.str());
+  if (in) {
+    std::ostringstream ss;
+    ss << in.rdbuf();
+    if (!in.bad()) return ss.str();
+  }
+  if (why) *why = std::strerror(errno ? errno : EIO);
+  return std::nullopt;
+}
+
+inline text_file read_text_file(const std::string& path) {
+  std::string why;
+  std::optional<std::string> text = read_file(path, &why);
+  if (!text) throw error(path, 0, "cannot open file: " + why);
+  return text_file(path, std::move(*text));
+}
+
+//! The folder of a path as written: "a/b" for "a/b/m.vvp", "/" for
+//! "/m.vvp", "" for "m.vvp" (resolve() below puts them back together).
+inline std::string folder_of(const std::string& path) { return std::filesystem::path(path).parent_path().string(); }
+
+//! The folder of a path, absolute (relative to the working folder when that
+//! cannot be found; "." for a bare name then).
+inline std::string absolute_folder_of(const std::string& path) {
+  std::error_code ec;
+  std::filesystem::path p = std::filesystem::absolute(path, ec);
+  std::string folder = folder_of(ec ? path : p.string());
+  return folder.empty() ? "." : folder;
 }
 
 //! The extension of a path, lower-cased, with its dot (".obj"), or "".

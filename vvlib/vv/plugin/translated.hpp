@@ -9,8 +9,8 @@
 
 #include <utility>
 
-#include "edges.hpp"
-#include "mesh.hpp"
+#include "../edges.hpp"
+#include "../mesh.hpp"
 
 namespace vv {
 

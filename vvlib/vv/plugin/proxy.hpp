@@ -84,4 +84,4 @@ struct proxy {
 
 }  // namespace vv
 
-#include "file_objects.hpp"
+#include "../file_objects.hpp"

@@ -14,4 +14,4 @@
 
 #include "plugin.hpp"
 #include "translated.hpp"
-#include "vv.hpp"
+#include "../vv.hpp"
