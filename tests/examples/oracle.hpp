@@ -26,6 +26,7 @@
 
 #include "run_interpreter.hpp"
 #include "test_files.hpp"
+#include "positions_graph.hpp"
 
 namespace oracle {
 
@@ -36,14 +37,7 @@ struct polygons {
   std::vector<std::vector<std::uint32_t>> faces;
 };
 
-struct vertex_props {
-  util::Point<double> pos;
-  template <class F>
-  void vv_fields(F&& f) {
-    f("pos", pos);
-  }
-};
-using graph = vv::graph<vertex_props>;
+using graph = positions_graph::graph;
 
 //! A mesh file as points and counter-clockwise faces (any format vvlib reads).
 inline polygons read_polygons(const std::string& path) {
@@ -168,6 +162,35 @@ inline void expect_same_faces(const polygons& a, const polygons& b, double tol) 
     return out;
   };
   EXPECT_TRUE(key(a) == key(b)) << "the faces differ";
+}
+
+//! V, E, F of a closed polygon mesh (each edge borders two faces).
+struct counts {
+  std::size_t v, e, f;
+};
+inline counts counts_of(const polygons& p) {
+  std::size_t corners = 0;
+  for (const auto& face : p.faces) corners += face.size();
+  return {p.points.size(), corners / 2, p.faces.size()};
+}
+inline void expect_counts(const polygons& p, counts c) {
+  counts got = counts_of(p);
+  EXPECT_EQ(got.v, c.v);
+  EXPECT_EQ(got.e, c.e);
+  EXPECT_EQ(got.f, c.f);
+}
+//! Catmull-Clark's (and 4-8's) counts after `levels` levels: a vertex per
+//! old vertex, edge and face; every face becomes quads.
+inline counts catmull_clark_counts(counts c, unsigned levels) {
+  for (unsigned i = 0; i < levels; ++i) c = {c.v + c.e + c.f, 2 * c.e + 4 * c.f, 4 * c.f};
+  return c;
+}
+//! Doo-Sabin's counts after `levels` levels: a vertex for each corner of
+//! each face (2E), four edges for each old edge, a face for each old face,
+//! edge and vertex.
+inline counts doo_sabin_counts(counts c, unsigned levels) {
+  for (unsigned i = 0; i < levels; ++i) c = {2 * c.e, 4 * c.e, c.f + c.e + c.v};
+  return c;
 }
 
 }  // namespace oracle

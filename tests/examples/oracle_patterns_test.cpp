@@ -31,7 +31,7 @@ struct penrose_edge {
     f("forward", forward);
   }
 };
-using penrose_graph = vv::graph<oracle::vertex_props, penrose_edge>;
+using penrose_graph = vv::graph<positions_graph::props, penrose_edge>;
 
 const double phi = (1 + std::sqrt(5.0)) / 2;
 const double pi = std::acos(-1.0);

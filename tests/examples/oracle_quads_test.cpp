@@ -12,6 +12,12 @@
 
 namespace {
 
+using oracle::catmull_clark_counts;
+using oracle::counts;
+using oracle::counts_of;
+using oracle::doo_sabin_counts;
+using oracle::expect_counts;
+
 using oracle::model;
 
 oracle::polygons openmesh_catmull_clark(const oracle::polygons& in, unsigned steps) {
@@ -35,28 +41,6 @@ void expect_same_mesh(const oracle::polygons& ours, const oracle::polygons& thei
 
 // Counts after one Catmull-Clark step of a quad mesh and after one
 // Doo-Sabin step of any closed mesh.
-struct counts {
-  std::size_t v, e, f;
-};
-counts catmull_clark_counts(counts c, unsigned steps) {
-  for (unsigned i = 0; i < steps; ++i) c = {c.v + c.e + c.f, 2 * c.e + 4 * c.f, 4 * c.f};
-  return c;
-}
-counts doo_sabin_counts(counts c, unsigned steps) {
-  for (unsigned i = 0; i < steps; ++i) c = {2 * c.e, 4 * c.e, c.f + c.e + c.v};
-  return c;
-}
-counts counts_of(const oracle::polygons& p) {
-  std::size_t corners = 0;
-  for (const auto& f : p.faces) corners += f.size();
-  return {p.points.size(), corners / 2, p.faces.size()};
-}
-void expect_counts(const oracle::polygons& p, counts c) {
-  counts got = counts_of(p);
-  EXPECT_EQ(got.v, c.v);
-  EXPECT_EQ(got.e, c.e);
-  EXPECT_EQ(got.f, c.f);
-}
 
 bool contains(const std::vector<oracle::point>& points, const oracle::point& q) {
   for (const oracle::point& p : points)

@@ -20,6 +20,11 @@
 
 namespace {
 
+using oracle::catmull_clark_counts;
+using oracle::counts;
+using oracle::counts_of;
+using oracle::expect_counts;
+
 using oracle::model;
 using oracle::point;
 
@@ -29,26 +34,6 @@ oracle::polygons openmesh_catmull_clark(const oracle::polygons& in, unsigned ste
 
 oracle::polygons cgal_catmull_clark(const oracle::polygons& in, unsigned steps) {
   return peers::cgal(in, steps, [](auto& m, auto params) { CGAL::Subdivision_method_3::CatmullClark_subdivision(m, params); });
-}
-
-struct counts {
-  std::size_t v, e, f;
-};
-// Catmull-Clark's and 4-8's counts per full level of a closed quad mesh.
-counts quad_level_counts(counts c, unsigned steps) {
-  for (unsigned i = 0; i < steps; ++i) c = {c.v + c.e + c.f, 2 * c.e + 4 * c.f, 4 * c.f};
-  return c;
-}
-counts counts_of(const oracle::polygons& p) {
-  std::size_t corners = 0;
-  for (const auto& f : p.faces) corners += f.size();
-  return {p.points.size(), corners / 2, p.faces.size()};
-}
-void expect_counts(const oracle::polygons& p, counts c) {
-  counts got = counts_of(p);
-  EXPECT_EQ(got.v, c.v);
-  EXPECT_EQ(got.e, c.e);
-  EXPECT_EQ(got.f, c.f);
 }
 
 double distance(const point& p, const point& q) {
@@ -135,7 +120,7 @@ TEST(StellarCatmullClarkOracle, QuadTorusEqualsOpenMeshAndCgalEveryLevel) {
   for (unsigned steps = 1; steps <= 3; ++steps) {
     SCOPED_TRACE(steps);
     oracle::polygons ours = oracle::run_example("examples/stellar_catmull_clark.vvp", input, steps);
-    expect_counts(ours, quad_level_counts(counts_of(base), steps));
+    expect_counts(ours, catmull_clark_counts(counts_of(base), steps));
     for (const oracle::polygons& theirs : {openmesh_catmull_clark(base, steps), cgal_catmull_clark(base, steps)}) {
       oracle::expect_same_points(ours.points, theirs.points, 1e-9);
       oracle::expect_same_faces(ours, theirs, 1e-9);
@@ -147,7 +132,7 @@ TEST(StellarCatmullClarkOracle, CubeCountsEveryLevel) {
   // 8/12/6 -> 26/48/24 -> 98/192/96 -> 386/768/384: the quad mesh's counts.
   for (unsigned steps = 1; steps <= 3; ++steps)
     expect_counts(oracle::run_example("examples/stellar_catmull_clark.vvp", "", steps),
-                  quad_level_counts({8, 12, 6}, steps));
+                  catmull_clark_counts({8, 12, 6}, steps));
 }
 
 TEST(StellarCatmullClarkOracle, CubeCornersDifferFromOpenMeshByTheMeasuredAmount) {
@@ -191,7 +176,7 @@ TEST(StellarFourEightOracle, PeriodicGridEqualsTheBoxSplineMaskEveryLevel) {
     unsigned scale = 1u << (steps - 1);
     expected = box_spline_level(expected, n * scale, m * scale);
     oracle::polygons ours = oracle::run_example("examples/stellar_four_eight.vvp", input, steps);
-    expect_counts(ours, quad_level_counts(counts_of(base), steps));
+    expect_counts(ours, catmull_clark_counts(counts_of(base), steps));
     oracle::expect_same_points(ours.points, expected, 1e-9);
   }
 }

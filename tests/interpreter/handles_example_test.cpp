@@ -16,6 +16,7 @@
 
 #include "run_interpreter.hpp"
 #include "test_files.hpp"
+#include "positions_graph.hpp"
 
 namespace {
 
@@ -47,14 +48,7 @@ const std::string four_steps =
     "step 4: V 1024, E 2048, F 1024, genus 1\n"
     "step 4, Catmull-Clark: V 1024, E 2048, F 1024, genus 1\n";
 
-struct props {
-  util::Point<double> pos;
-  template <class F>
-  void vv_fields(F&& f) {
-    f("pos", pos);
-  }
-};
-using graph = vv::graph<props>;
+using positions_graph::graph;
 
 }  // namespace
 

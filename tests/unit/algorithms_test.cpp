@@ -14,17 +14,12 @@
 #include <vv/io/from_faces.hpp>
 #include <vv/vv.hpp>
 
+#include "positions_graph.hpp"
+
 namespace {
 
-struct props {
-  util::Point<double> pos;
-  template <class F>
-  void vv_fields(F&& f) {
-    f("pos", pos);
-  }
-};
-using graph = vv::graph<props>;
-using vertex = graph::vertex;
+using positions_graph::graph;
+using positions_graph::vertex;
 
 struct fixture : ::testing::Test {
   graph::context ctx;

@@ -2,17 +2,7 @@
 # (-H lists every header it opens) must open nothing of OpenMesh, CGAL or
 # GL. The same check on the bridges that do use them must find them, so
 # the test can fail.
-function(headers_opened header out)
-  string(MAKE_C_IDENTIFIER ${header} name)
-  set(source ${WORK}/algebra_${name}.cpp)
-  file(WRITE ${source} "#include <${header}>\n")
-  execute_process(COMMAND ${CXX} -std=c++17 -E -H -isystem ${VVLIB} ${source}
-                  RESULT_VARIABLE status OUTPUT_QUIET ERROR_VARIABLE opened)
-  if(NOT status EQUAL 0)
-    message(FATAL_ERROR "cannot preprocess <${header}>:\n${opened}")
-  endif()
-  set(${out} "${opened}" PARENT_SCOPE)
-endfunction()
+include(${CMAKE_CURRENT_LIST_DIR}/headers_opened.cmake)
 
 set(forbidden "/OpenMesh/" "/CGAL/" "/GL/")
 headers_opened(vv/vv.hpp opened)

@@ -13,17 +13,12 @@
 #include <vv/io/from_faces.hpp>
 #include <vv/vv.hpp>
 
+#include "positions_graph.hpp"
+
 namespace {
 
-struct props {
-  util::Point<double> pos;
-  template <class F>
-  void vv_fields(F&& f) {
-    f("pos", pos);
-  }
-};
-using graph = vv::graph<props>;
-using vertex = graph::vertex;
+using positions_graph::graph;
+using positions_graph::vertex;
 
 struct StellarDual : ::testing::Test {
   graph::context ctx;
