@@ -135,6 +135,8 @@ class parser {
   bool starts_parameter() const;
   void parse_parameter(program& p);
   void analyse_fields(property_block& block);
+  void add_field(property_block& block, std::size_t first, std::size_t last, bool first_declarator,
+                 bool& type_has_handle);
 
   const std::vector<token>& toks_;
   diagnostics& diag_;

@@ -182,6 +182,60 @@ void parser::parse_top_declaration(program& p) {
   p.items.push_back(std::move(item));
 }
 
+namespace {
+
+using declarator_range = std::pair<std::size_t, std::size_t>;  // pieces [first, last)
+
+// Member declarations that declare no data member: statics, types,
+// aliases, friends, templates, functions by their specifiers.
+bool declares_no_data(const piece& head) {
+  if (head.kind != piece_kind::token || !head.tok->is_identifier()) return false;
+  std::string_view w = head.tok->text;
+  return w == "static" || w == "typedef" || w == "using" || w == "friend" || w == "template" || w == "enum" ||
+         w == "struct" || w == "class" || w == "union" || w == "virtual" || w == "explicit" || w == "operator" ||
+         w == "constexpr" || w == "inline";
+}
+
+// The declarators of the member declaration [s, e), split at commas outside
+// template brackets; none when a `(` outside them before any `=` makes it a
+// function declaration.
+std::vector<declarator_range> split_declarators(const pieces& m, std::size_t s, std::size_t e) {
+  std::vector<declarator_range> declarators;
+  int angle = 0;
+  bool seen_init = false;
+  std::size_t d = s;
+  for (std::size_t k = s; k < e; ++k) {
+    const piece& q = m[k];
+    if (is_token(q, "<")) ++angle;
+    else if (is_token(q, ">")) --angle;
+    else if (is_token(q, ">>")) angle -= 2;
+    else if (is_token(q, "=")) seen_init = true;
+    else if (angle <= 0 && !seen_init && q.kind == piece_kind::group && q.tok->is("(")) return {};
+    else if (angle <= 0 && is_token(q, ",")) {
+      declarators.push_back({d, k});
+      d = k + 1;
+      seen_init = false;
+    }
+  }
+  declarators.push_back({d, e});
+  return declarators;
+}
+
+// A declarator without an initialiser or a bit-field width gets `{}` after
+// its last piece (after any array bounds from `stop` on).
+void value_initialise_unless_initialised(property_block& b, std::size_t stop, std::size_t de) {
+  const pieces& m = b.members;
+  std::size_t k = stop;
+  while (k < de && m[k].kind == piece_kind::group && m[k].tok->is("[")) ++k;
+  bool has_init = k < de && (is_token(m[k], "=") || is_token(m[k], ":") ||
+                             (m[k].kind == piece_kind::group && m[k].tok->is("{")));
+  if (has_init) return;
+  const piece& last = m[k - 1];
+  b.value_init_after.push_back(last.kind == piece_kind::group ? last.close : last.tok);
+}
+
+}  // namespace
+
 // A data member of a property block: a declaration that is no function,
 // type, alias or static. Its declarators name the fields; those without an
 // initialiser get `{}` so every property starts value-initialised.
@@ -197,74 +251,44 @@ void parser::analyse_fields(property_block& b) {
            (m[s].tok->is_word("public") || m[s].tok->is_word("private") || m[s].tok->is_word("protected")) &&
            is_token(m[s + 1], ":"))
       s += 2;
-    if (s >= e || (i < m.size() && m[i].kind == piece_kind::body)) continue;
-    const piece& head = m[s];
-    if (head.kind == piece_kind::token && head.tok->is_identifier()) {
-      std::string_view w = head.tok->text;
-      if (w == "static" || w == "typedef" || w == "using" || w == "friend" || w == "template" ||
-          w == "enum" || w == "struct" || w == "class" || w == "union" || w == "virtual" ||
-          w == "explicit" || w == "operator" || w == "constexpr" || w == "inline")
-        continue;
-    }
-    // Split into declarators at commas outside template brackets; a `(`
-    // outside them before any `=` makes it a function declaration.
-    std::vector<std::pair<std::size_t, std::size_t>> declarators;
-    int angle = 0;
-    bool function = false, seen_init = false;
-    std::size_t d = s;
-    for (std::size_t k = s; k < e; ++k) {
-      const piece& q = m[k];
-      if (is_token(q, "<")) ++angle;
-      else if (is_token(q, ">")) --angle;
-      else if (is_token(q, ">>")) angle -= 2;
-      else if (is_token(q, "=")) seen_init = true;
-      else if (angle <= 0 && !seen_init && q.kind == piece_kind::group && q.tok->is("(")) function = true;
-      else if (angle <= 0 && is_token(q, ",")) {
-        declarators.push_back({d, k});
-        d = k + 1;
-        seen_init = false;
-      }
-    }
-    if (function) continue;
-    declarators.push_back({d, e});
-    bool type_has_handle = false;
-    for (std::size_t di = 0; di < declarators.size(); ++di) {
-      auto [ds, de] = declarators[di];
-      std::size_t name = de, stop = de;
-      for (std::size_t k = ds; k < de; ++k) {
-        const piece& q = m[k];
-        if (is_token(q, "=") || is_token(q, ":") || (q.kind == piece_kind::group && q.tok->is("{")) ||
-            (q.kind == piece_kind::group && q.tok->is("["))) {
-          stop = k;
-          break;
-        }
-        if (q.kind == piece_kind::token && q.tok->is_identifier()) name = k;
-      }
-      if (name == de) {
-        // An empty declarator (`int a, ;`) has no token of its own.
-        const token& where = ds < de ? *m[ds].tok : ds > 0 ? *m[ds - 1].tok : *b.open;
-        error(where, "expected a property name in this declaration");
-        continue;
-      }
-      bool pointer = false;
-      for (std::size_t k = ds; k < name; ++k) {
-        if (is_token(m[k], "*") || is_token(m[k], "&")) pointer = true;
-        if (di == 0 && (is_token(m[k], "vertex") || is_token(m[k], "mesh"))) type_has_handle = true;
-      }
-      const token* name_tok = m[name].tok;
-      if (name_tok->text == "nb") error(*name_tok, "the property name 'nb' is reserved (it holds the neighbourhood in .vvm files)");
-      b.fields.push_back({name_tok, !pointer && !type_has_handle});
-      // Value-initialise unless there is an initialiser or a bit-field width.
-      std::size_t k = stop;
-      while (k < de && m[k].kind == piece_kind::group && m[k].tok->is("[")) ++k;
-      bool has_init = k < de && (is_token(m[k], "=") || is_token(m[k], ":") ||
-                                 (m[k].kind == piece_kind::group && m[k].tok->is("{")));
-      if (!has_init) {
-        const piece& last = m[k - 1];
-        b.value_init_after.push_back(last.kind == piece_kind::group ? last.close : last.tok);
-      }
-    }
+    if (s >= e || (i < m.size() && m[i].kind == piece_kind::body) || declares_no_data(m[s])) continue;
+    bool type_has_handle = false;  // read from the first declarator: the type is written there
+    std::vector<declarator_range> declarators = split_declarators(m, s, e);
+    for (std::size_t di = 0; di < declarators.size(); ++di)
+      add_field(b, declarators[di].first, declarators[di].second, di == 0, type_has_handle);
   }
+}
+
+// One declarator [ds, de) of a data member: its name becomes a field
+// (handles and pointers are not written to .vvm files), then its
+// value-initialisation.
+void parser::add_field(property_block& b, std::size_t ds, std::size_t de, bool first, bool& type_has_handle) {
+  const pieces& m = b.members;
+  std::size_t name = de, stop = de;
+  for (std::size_t k = ds; k < de; ++k) {
+    const piece& q = m[k];
+    if (is_token(q, "=") || is_token(q, ":") || (q.kind == piece_kind::group && q.tok->is("{")) ||
+        (q.kind == piece_kind::group && q.tok->is("["))) {
+      stop = k;
+      break;
+    }
+    if (q.kind == piece_kind::token && q.tok->is_identifier()) name = k;
+  }
+  if (name == de) {
+    // An empty declarator (`int a, ;`) has no token of its own.
+    const token& where = ds < de ? *m[ds].tok : ds > 0 ? *m[ds - 1].tok : *b.open;
+    error(where, "expected a property name in this declaration");
+    return;
+  }
+  bool pointer = false;
+  for (std::size_t k = ds; k < name; ++k) {
+    if (is_token(m[k], "*") || is_token(m[k], "&")) pointer = true;
+    if (first && (is_token(m[k], "vertex") || is_token(m[k], "mesh"))) type_has_handle = true;
+  }
+  const token* name_tok = m[name].tok;
+  if (name_tok->text == "nb") error(*name_tok, "the property name 'nb' is reserved (it holds the neighbourhood in .vvm files)");
+  b.fields.push_back({name_tok, !pointer && !type_has_handle});
+  value_initialise_unless_initialised(b, stop, de);
 }
 
 }  // namespace vvc
