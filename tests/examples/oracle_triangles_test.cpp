@@ -49,7 +49,7 @@ std::array<std::size_t, 3> sqrt3(std::array<std::size_t, 3> c, unsigned steps) {
   for (unsigned i = 0; i < steps; ++i) c = {c[0] + c[2], c[1] + 3 * c[2], 3 * c[2]};
   return c;
 }
-std::array<std::size_t, 3> counts_of(const oracle::polygons& p) {
+std::array<std::size_t, 3> triangle_counts_of(const oracle::polygons& p) {
   return {p.points.size(), 3 * p.faces.size() / 2, p.faces.size()};
 }
 
@@ -57,7 +57,7 @@ std::array<std::size_t, 3> counts_of(const oracle::polygons& p) {
 
 TEST(Sqrt3Oracle, IcosahedronEqualsOpenMeshAndCgal) {
   oracle::polygons base = oracle::read_polygons(model("icosahedron.vvm"));
-  ASSERT_EQ(counts_of(base), (std::array<std::size_t, 3>{12, 30, 20}));
+  ASSERT_EQ(triangle_counts_of(base), (std::array<std::size_t, 3>{12, 30, 20}));
   oracle::polygons ours = oracle::run_example("examples/sqrt3.vvp", "", 3);
   EXPECT_EQ(ours.points.size(), 272u);
   EXPECT_EQ(ours.faces.size(), 540u);  // 20 * 3^3
@@ -70,7 +70,7 @@ TEST(Sqrt3Oracle, ScannedCowEqualsOpenMeshAndCgal) {
   std::string input = oracle::input_vvm("cow", oracle::cgal_mesh_file("cow.off"));
   oracle::polygons base = oracle::read_polygons(input);
   oracle::polygons ours = oracle::run_example("examples/sqrt3.vvp", input, 2);
-  EXPECT_EQ(counts_of(ours), sqrt3(counts_of(base), 2));
+  EXPECT_EQ(triangle_counts_of(ours), sqrt3(triangle_counts_of(base), 2));
   double size = oracle::size_of(base.points);
   expect_same_mesh(ours, openmesh<OpenMesh::Subdivider::Uniform::Sqrt3T>(base, 2), size);
   expect_same_mesh(ours, cgal_sqrt3(base, 2), size);
@@ -79,9 +79,9 @@ TEST(Sqrt3Oracle, ScannedCowEqualsOpenMeshAndCgal) {
 TEST(ButterflyOracle, RegularTorusEqualsOpenMeshModifiedButterfly) {
   std::string input = model("torus_tri.vvm");
   oracle::polygons base = oracle::read_polygons(input);
-  ASSERT_EQ(counts_of(base), (std::array<std::size_t, 3>{96, 288, 192}));
+  ASSERT_EQ(triangle_counts_of(base), (std::array<std::size_t, 3>{96, 288, 192}));
   oracle::polygons ours = oracle::run_example("examples/butterfly.vvp", input, 2);
-  EXPECT_EQ(counts_of(ours), split4(counts_of(base), 2));
+  EXPECT_EQ(triangle_counts_of(ours), split4(triangle_counts_of(base), 2));
   expect_same_mesh(ours, openmesh<OpenMesh::Subdivider::Uniform::ModifiedButterflyT>(base, 2),
                    oracle::size_of(base.points));
 }
@@ -92,7 +92,7 @@ TEST(ButterflyOracle, IcosahedronKeepsOldVerticesAndSplitsLikeLoop) {
   oracle::polygons base = oracle::read_polygons(model("icosahedron.vvm"));
   oracle::polygons ours = oracle::run_example("examples/butterfly.vvp", "", 2);
   oracle::polygons loop = oracle::run_example("examples/loop.vvp", model("icosahedron.vvm"), 2);
-  EXPECT_EQ(counts_of(ours), split4(counts_of(base), 2));
+  EXPECT_EQ(triangle_counts_of(ours), split4(triangle_counts_of(base), 2));
   EXPECT_EQ(ours.faces, loop.faces);  // the same vertex order and the same orbits
   for (std::size_t i = 0; i < base.points.size(); ++i)
     for (int c = 0; c < 3; ++c) EXPECT_EQ(ours.points[i][c], base.points[i][c]);
@@ -106,7 +106,7 @@ TEST(StellarOracle, LoopEqualsLoopExampleAndOpenMesh) {
     unsigned steps = base.points.size() > 100 ? 2 : 3;
     oracle::polygons stellar = oracle::run_example("examples/stellar_loop.vvp", input, steps);
     oracle::polygons loop = oracle::run_example("examples/loop.vvp", input, steps);
-    EXPECT_EQ(counts_of(stellar), split4(counts_of(base), steps));
+    EXPECT_EQ(triangle_counts_of(stellar), split4(triangle_counts_of(base), steps));
     double size = oracle::size_of(base.points);
     expect_same_mesh(stellar, loop, size);
     expect_same_mesh(stellar, openmesh<OpenMesh::Subdivider::Uniform::LoopT>(base, steps), size);
@@ -121,7 +121,7 @@ TEST(StellarOracle, Sqrt3EqualsSqrt3Example) {
     unsigned steps = base.points.size() > 100 ? 2 : 4;
     oracle::polygons stellar = oracle::run_example("examples/stellar_sqrt3.vvp", input, steps);
     oracle::polygons direct = oracle::run_example("examples/sqrt3.vvp", input, steps);
-    EXPECT_EQ(counts_of(stellar), sqrt3(counts_of(base), steps));
+    EXPECT_EQ(triangle_counts_of(stellar), sqrt3(triangle_counts_of(base), steps));
     expect_same_mesh(stellar, direct, oracle::size_of(base.points));
   }
 }
