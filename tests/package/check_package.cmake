@@ -15,6 +15,7 @@ function(check_project name args needs refuses)
   execute_process(COMMAND ${CMAKE_COMMAND} -S ${SOURCE}/tests/package/${name} -B ${work}
                           -DCMAKE_PREFIX_PATH=${PREFIX} -DCMAKE_BUILD_TYPE=Release
                           -DCMAKE_CXX_COMPILER=${CXX} -DCMAKE_CXX_COMPILER_LAUNCHER=${LAUNCHER}
+                          "-DCMAKE_CXX_FLAGS=${FLAGS}"
                   RESULT_VARIABLE status OUTPUT_VARIABLE out ERROR_VARIABLE err)
   if(NOT status EQUAL 0)
     message(FATAL_ERROR "${name}: configuring against the installed package failed:\n${out}${err}")
