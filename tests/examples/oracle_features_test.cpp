@@ -18,8 +18,6 @@
 #include "oracle.hpp"
 #include "peers.hpp"
 
-// After peers.hpp: the subdividers rely on the OpenMesh headers it includes.
-#include <OpenMesh/Tools/Subdivider/Uniform/LoopT.hh>
 
 namespace {
 
@@ -202,12 +200,11 @@ oracle::polygons triangles_only(oracle::polygons p) {
 }
 
 std::vector<point> openmesh_loop(const oracle::polygons& in, unsigned steps) {
-  return peers::openmesh<peers::om_tri_mesh, OpenMesh::Subdivider::Uniform::LoopT>(triangles_only(in), steps).points;
+  return peers::openmesh_loop(triangles_only(in), steps).points;
 }
 
 std::vector<point> cgal_loop(const oracle::polygons& in, unsigned steps) {
-  auto loop = [](auto& m, auto params) { CGAL::Subdivision_method_3::Loop_subdivision(m, params); };
-  return peers::cgal(triangles_only(in), steps, loop).points;
+  return peers::cgal_loop(triangles_only(in), steps).points;
 }
 
 // ---- Helpers ----

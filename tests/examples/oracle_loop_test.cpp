@@ -4,17 +4,15 @@
 #include "oracle.hpp"
 #include "peers.hpp"
 
-// After peers.hpp: the subdividers rely on the OpenMesh headers it includes.
-#include <OpenMesh/Tools/Subdivider/Uniform/LoopT.hh>
 
 namespace {
 
 std::vector<oracle::point> openmesh_loop(const oracle::polygons& in, unsigned steps) {
-  return peers::openmesh<peers::om_tri_mesh, OpenMesh::Subdivider::Uniform::LoopT>(in, steps).points;
+  return peers::openmesh_loop(in, steps).points;
 }
 
 std::vector<oracle::point> cgal_loop(const oracle::polygons& in, unsigned steps) {
-  return peers::cgal(in, steps, [](auto& m, auto params) { CGAL::Subdivision_method_3::Loop_subdivision(m, params); }).points;
+  return peers::cgal_loop(in, steps).points;
 }
 
 }  // namespace

@@ -44,27 +44,6 @@ oracle::polygons split(oracle::polygons p, unsigned steps) {
   return p;
 }
 
-using peers::cgal_mesh;
-using kernel = CGAL::Simple_cartesian<double>;
-
-// The geometry policy for CGAL's PTQ refinement: linear interpolation.
-struct linear_mask {
-  cgal_mesh* m;
-  void edge_node(cgal_mesh::Halfedge_index h, kernel::Point_3& pt) {
-    pt = CGAL::midpoint(m->point(m->source(h)), m->point(m->target(h)));
-  }
-  void vertex_node(cgal_mesh::Vertex_index v, kernel::Point_3& pt) { pt = m->point(v); }
-  void border_node(cgal_mesh::Halfedge_index h, kernel::Point_3& ept, kernel::Point_3& vpt) {
-    edge_node(h, ept);
-    vpt = m->point(m->target(h));
-  }
-};
-
-
-oracle::polygons cgal_ptq(const oracle::polygons& in, unsigned steps) {
-  return peers::cgal(in, steps, [](cgal_mesh& m, auto params) { CGAL::Subdivision_method_3::PTQ(m, linear_mask{&m}, params); });
-}
-
 void check(const oracle::polygons& base, const oracle::polygons& ours, unsigned steps) {
   // Each step adds a vertex per edge and makes four triangles of each.
   std::size_t v = base.points.size(), e = 3 * base.faces.size() / 2, f = base.faces.size();
@@ -72,7 +51,7 @@ void check(const oracle::polygons& base, const oracle::polygons& ours, unsigned 
   ASSERT_EQ(ours.points.size(), v);
   ASSERT_EQ(ours.faces.size(), f);
   double tol = 1e-9 * oracle::size_of(base.points);
-  oracle::polygons plain = split(base, steps), cgal = cgal_ptq(base, steps);
+  oracle::polygons plain = split(base, steps), cgal = peers::cgal_midpoint(base, steps);
   oracle::expect_same_points(ours.points, plain.points, tol);
   oracle::expect_same_faces(ours, plain, tol);
   oracle::expect_same_points(ours.points, cgal.points, tol);

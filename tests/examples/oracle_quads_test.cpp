@@ -7,8 +7,6 @@
 #include "oracle.hpp"
 #include "peers.hpp"
 
-// After peers.hpp: the subdividers rely on the OpenMesh headers it includes.
-#include <OpenMesh/Tools/Subdivider/Uniform/CatmullClarkT.hh>
 
 namespace {
 
@@ -20,17 +18,9 @@ using oracle::expect_counts;
 
 using oracle::model;
 
-oracle::polygons openmesh_catmull_clark(const oracle::polygons& in, unsigned steps) {
-  return peers::openmesh<peers::om_poly_mesh, OpenMesh::Subdivider::Uniform::CatmullClarkT>(in, steps);
-}
-
-oracle::polygons cgal_catmull_clark(const oracle::polygons& in, unsigned steps) {
-  return peers::cgal(in, steps, [](auto& m, auto params) { CGAL::Subdivision_method_3::CatmullClark_subdivision(m, params); });
-}
-
-oracle::polygons cgal_doo_sabin(const oracle::polygons& in, unsigned steps) {
-  return peers::cgal(in, steps, [](auto& m, auto params) { CGAL::Subdivision_method_3::DooSabin_subdivision(m, params); });
-}
+using peers::openmesh_catmull_clark;
+using peers::cgal_catmull_clark;
+using peers::cgal_doo_sabin;
 
 // The same points and the same faces, within 1e-9 of the mesh's size.
 void expect_same_mesh(const oracle::polygons& ours, const oracle::polygons& theirs, double size) {

@@ -17,9 +17,7 @@ using oracle::expect_counts;
 
 using oracle::model;
 
-oracle::polygons cgal_doo_sabin(const oracle::polygons& in, unsigned steps) {
-  return peers::cgal(in, steps, [](auto& m, auto params) { CGAL::Subdivision_method_3::DooSabin_subdivision(m, params); });
-}
+using peers::cgal_doo_sabin;
 
 double distance(const oracle::point& p, const oracle::point& q) {
   return std::sqrt((p[0] - q[0]) * (p[0] - q[0]) + (p[1] - q[1]) * (p[1] - q[1]) + (p[2] - q[2]) * (p[2] - q[2]));

@@ -15,8 +15,6 @@
 #include "oracle.hpp"
 #include "peers.hpp"
 
-// After peers.hpp: the subdividers rely on the OpenMesh headers it includes.
-#include <OpenMesh/Tools/Subdivider/Uniform/CatmullClarkT.hh>
 
 namespace {
 
@@ -28,13 +26,8 @@ using oracle::expect_counts;
 using oracle::model;
 using oracle::point;
 
-oracle::polygons openmesh_catmull_clark(const oracle::polygons& in, unsigned steps) {
-  return peers::openmesh<peers::om_poly_mesh, OpenMesh::Subdivider::Uniform::CatmullClarkT>(in, steps);
-}
-
-oracle::polygons cgal_catmull_clark(const oracle::polygons& in, unsigned steps) {
-  return peers::cgal(in, steps, [](auto& m, auto params) { CGAL::Subdivision_method_3::CatmullClark_subdivision(m, params); });
-}
+using peers::openmesh_catmull_clark;
+using peers::cgal_catmull_clark;
 
 double distance(const point& p, const point& q) {
   return std::sqrt((p[0] - q[0]) * (p[0] - q[0]) + (p[1] - q[1]) * (p[1] - q[1]) + (p[2] - q[2]) * (p[2] - q[2]));

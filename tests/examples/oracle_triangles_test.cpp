@@ -12,10 +12,6 @@
 #include "oracle.hpp"
 #include "peers.hpp"
 
-// After peers.hpp: the subdividers rely on the OpenMesh headers it includes.
-#include <OpenMesh/Tools/Subdivider/Uniform/LoopT.hh>
-#include <OpenMesh/Tools/Subdivider/Uniform/ModifiedButterFlyT.hh>
-#include <OpenMesh/Tools/Subdivider/Uniform/Sqrt3T.hh>
 
 namespace {
 
@@ -29,15 +25,10 @@ void expect_same_mesh(const oracle::polygons& ours, const oracle::polygons& thei
 
 using oracle::model;
 
-// One of OpenMesh's uniform subdividers on a triangle mesh.
-template <template <class, class> class Subdivider>
-oracle::polygons openmesh(const oracle::polygons& in, unsigned steps) {
-  return peers::openmesh<peers::om_tri_mesh, Subdivider>(in, steps);
-}
-
-oracle::polygons cgal_sqrt3(const oracle::polygons& in, unsigned steps) {
-  return peers::cgal(in, steps, [](auto& m, auto params) { CGAL::Subdivision_method_3::Sqrt3_subdivision(m, params); });
-}
+using peers::cgal_sqrt3;
+using peers::openmesh_loop;
+using peers::openmesh_modified_butterfly;
+using peers::openmesh_sqrt3;
 
 // V, E, F after `steps` steps of a 1:4 split (Loop, butterfly) or a sqrt(3)
 // step of a closed triangle mesh.
@@ -62,7 +53,7 @@ TEST(Sqrt3Oracle, IcosahedronEqualsOpenMeshAndCgal) {
   EXPECT_EQ(ours.points.size(), 272u);
   EXPECT_EQ(ours.faces.size(), 540u);  // 20 * 3^3
   double size = oracle::size_of(base.points);
-  expect_same_mesh(ours, openmesh<OpenMesh::Subdivider::Uniform::Sqrt3T>(base, 3), size);
+  expect_same_mesh(ours, openmesh_sqrt3(base, 3), size);
   expect_same_mesh(ours, cgal_sqrt3(base, 3), size);
 }
 
@@ -72,7 +63,7 @@ TEST(Sqrt3Oracle, ScannedCowEqualsOpenMeshAndCgal) {
   oracle::polygons ours = oracle::run_example("examples/sqrt3.vvp", input, 2);
   EXPECT_EQ(triangle_counts_of(ours), sqrt3(triangle_counts_of(base), 2));
   double size = oracle::size_of(base.points);
-  expect_same_mesh(ours, openmesh<OpenMesh::Subdivider::Uniform::Sqrt3T>(base, 2), size);
+  expect_same_mesh(ours, openmesh_sqrt3(base, 2), size);
   expect_same_mesh(ours, cgal_sqrt3(base, 2), size);
 }
 
@@ -82,7 +73,7 @@ TEST(ButterflyOracle, RegularTorusEqualsOpenMeshModifiedButterfly) {
   ASSERT_EQ(triangle_counts_of(base), (std::array<std::size_t, 3>{96, 288, 192}));
   oracle::polygons ours = oracle::run_example("examples/butterfly.vvp", input, 2);
   EXPECT_EQ(triangle_counts_of(ours), split4(triangle_counts_of(base), 2));
-  expect_same_mesh(ours, openmesh<OpenMesh::Subdivider::Uniform::ModifiedButterflyT>(base, 2),
+  expect_same_mesh(ours, openmesh_modified_butterfly(base, 2),
                    oracle::size_of(base.points));
 }
 
@@ -109,7 +100,7 @@ TEST(StellarOracle, LoopEqualsLoopExampleAndOpenMesh) {
     EXPECT_EQ(triangle_counts_of(stellar), split4(triangle_counts_of(base), steps));
     double size = oracle::size_of(base.points);
     expect_same_mesh(stellar, loop, size);
-    expect_same_mesh(stellar, openmesh<OpenMesh::Subdivider::Uniform::LoopT>(base, steps), size);
+    expect_same_mesh(stellar, openmesh_loop(base, steps), size);
   }
 }
 
