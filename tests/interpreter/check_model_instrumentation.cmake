@@ -1,0 +1,50 @@
+# A sanitizer build of the interpreter instruments the models it compiles,
+# and VV_SANITIZE_MODELS=0 leaves them uninstrumented (the host tests'
+# setting). Checked on the compiled plugin: an instrumented one needs the
+# AddressSanitizer runtime (__asan_init), a plain one does not.
+#   cmake -DINTERPRETER=... -DMODEL=... -DWORK=... -P check_model_instrumentation.cmake
+file(REMOVE_RECURSE ${WORK})
+function(compiled_plugin setting out)
+  execute_process(COMMAND ${CMAKE_COMMAND} -E env ${setting}
+                          ${INTERPRETER} --compile-only --cache ${WORK}/${ARGN} ${MODEL}
+                  RESULT_VARIABLE status OUTPUT_VARIABLE output ERROR_VARIABLE output)
+  if(NOT status EQUAL 0)
+    message(FATAL_ERROR "compile failed (${setting}):\n${output}")
+  endif()
+  # The cache names each build twice: by its key (a link) and by itself.
+  file(GLOB found ${WORK}/${ARGN}/plugins/*/model.so)
+  set(plugins "")
+  foreach(path IN LISTS found)
+    file(REAL_PATH ${path} real)
+    list(APPEND plugins ${real})
+  endforeach()
+  list(REMOVE_DUPLICATES plugins)
+  list(LENGTH plugins count)
+  if(NOT count EQUAL 1)
+    message(FATAL_ERROR "expected one plugin in ${WORK}/${ARGN}, found: ${plugins}")
+  endif()
+  set(${out} ${plugins} PARENT_SCOPE)
+endfunction()
+function(needs_asan plugin out)
+  execute_process(COMMAND nm -D --undefined-only ${plugin} OUTPUT_VARIABLE symbols RESULT_VARIABLE status)
+  if(NOT status EQUAL 0)
+    message(FATAL_ERROR "nm failed on ${plugin}")
+  endif()
+  if(symbols MATCHES "__asan_init")
+    set(${out} TRUE PARENT_SCOPE)
+  else()
+    set(${out} FALSE PARENT_SCOPE)
+  endif()
+endfunction()
+
+compiled_plugin("VV_SANITIZE_MODELS=1" instrumented default)
+compiled_plugin("VV_SANITIZE_MODELS=0" plain plain)
+needs_asan(${instrumented} instrumented_needs)
+needs_asan(${plain} plain_needs)
+if(NOT instrumented_needs)
+  message(FATAL_ERROR "the default model build is not instrumented: ${instrumented}")
+endif()
+if(plain_needs)
+  message(FATAL_ERROR "VV_SANITIZE_MODELS=0 still instrumented the model: ${plain}")
+endif()
+message(STATUS "instrumented by default, plain with VV_SANITIZE_MODELS=0")
