@@ -1,12 +1,15 @@
 # One example's regression test: run it in batch mode, export a mesh, and
 # check the export with vvm_check (counts, golden file).
 # -DINTERPRETER -DCHECK -DCACHE -DMODEL -DSTEPS -DOUT [-DMESH] [-DMAXFACE]
-# [-DVERTICES -DEDGES -DFACES] -DGOLDEN [-DTOLERANCE]
+# [-DVERTICES -DEDGES -DFACES] -DGOLDEN [-DTOLERANCE] [-DOPT (--opt)]
 # With VV_UPDATE_GOLDEN=1 in the environment (scripts/update-golden sets it
 # for its own run only) the export is written to GOLDEN instead.
 set(args --batch --quiet --cache ${CACHE} --steps ${STEPS} --export ${OUT})
 if(MESH)
   list(APPEND args --mesh ${MESH})
+endif()
+if(NOT "${OPT}" STREQUAL "")
+  list(APPEND args --opt ${OPT})
 endif()
 execute_process(COMMAND ${INTERPRETER} ${args} ${MODEL} RESULT_VARIABLE status ERROR_VARIABLE err)
 if(NOT status EQUAL 0)
