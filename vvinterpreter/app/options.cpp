@@ -6,7 +6,7 @@
 #include <functional>
 #include <string>
 
-#include "build/build_config.hpp"
+#include "compile/build_config.hpp"
 #include "viewer/script.hpp"
 
 namespace vvi {

@@ -8,7 +8,7 @@
 #include <map>
 #include <sstream>
 
-#include "build/process.hpp"
+#include "compile/process.hpp"
 
 namespace vvi {
 

@@ -11,7 +11,7 @@
 #include <vector>
 
 #include "app/options.hpp"
-#include "build/model_build.hpp"
+#include "compile/model_build.hpp"
 #include "runner/parameters.hpp"
 #include "runner/session.hpp"
 

@@ -1,4 +1,4 @@
-#include "build/compiler_messages.hpp"
+#include "compile/compiler_messages.hpp"
 
 #include <cctype>
 #include <map>

@@ -1,4 +1,4 @@
-#include "build/model_build.hpp"
+#include "compile/model_build.hpp"
 
 #include <algorithm>
 #include <chrono>
@@ -10,11 +10,11 @@
 #include <sstream>
 #include <unistd.h>
 
-#include "build/build_config.hpp"
+#include "compile/build_config.hpp"
 #include "app/files.hpp"
-#include "build/hashing.hpp"
-#include "build/compiler_messages.hpp"
-#include "build/process.hpp"
+#include "compile/hashing.hpp"
+#include "compile/compiler_messages.hpp"
+#include "compile/process.hpp"
 #include "translate.hpp"
 
 namespace vvi {
