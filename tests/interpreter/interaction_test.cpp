@@ -2,7 +2,11 @@
 // proxy.plot (batch --plots, script `plots`), a vertex described by label
 // (--pick, script `pick`), colour by a numeric property (--color-by),
 // parameters set and saved from the viewer, file objects reread when their
-// file is saved, and --help listing every script command.
+// file is saved, and --help listing every script command; and how the
+// viewer shows it all: the panel within the window, the pick in view and
+// highlighted, slider values readable, the colour bar labelled and clear
+// of the model.
+#include "text_in_image.hpp"
 #include "viewer_harness.hpp"
 
 namespace {
@@ -67,7 +71,28 @@ TEST(Pick, AnUnknownLabelIsOneLineAndFails) {
       << report(r);
 }
 
-TEST(ColourBy, TheScreenshotIsColouredByTheProperty) {
+// The colour bar's columns: where its middle row has the ramp's middle
+// colour (teal), searching from the right edge. Empty when there is none.
+struct bar_columns {
+  int x0 = -1, x1 = -1;  // inclusive
+  bool found() const { return x0 >= 0; }
+};
+bar_columns find_colour_bar(const image& im) {
+  bar_columns b;
+  auto teal = [](const unsigned char* p) { return p[0] < 60 && p[1] > 120 && p[2] > 110; };
+  int y = im.height / 2;
+  for (int x = im.width - 1; x >= 0; --x) {
+    if (teal(im.at(x, y))) {
+      if (b.x1 < 0) b.x1 = x;
+      b.x0 = x;
+    } else if (b.x1 >= 0) {
+      break;
+    }
+  }
+  return b;
+}
+
+TEST(ColourBy, TheScreenshotIsColouredByThePropertyAndTheBarLabelled) {
   std::string d = fresh_dir("colour_by");
   ASSERT_EQ(batch({"--quiet", "--screenshot", d + "plain.png", inspect_model}).status, 0);
   test_run::result r = batch({"--quiet", "--color-by", "height", "--screenshot", d + "height.png", inspect_model});
@@ -76,15 +101,41 @@ TEST(ColourBy, TheScreenshotIsColouredByTheProperty) {
   ASSERT_EQ(plain.width, coloured.width);
   ASSERT_EQ(plain.height, coloured.height);
   // A face above the front edge (the model) changes colour; the colour
-  // bar at the right edge runs from dark violet (bottom) to yellow (top).
+  // bar at the right runs from dark violet (bottom) to yellow (top).
   auto at = [](const image& im, int x, int y) { return im.at(x, y); };
   int cx = plain.width / 2, cy = plain.height / 2 - plain.height / 8;
   EXPECT_FALSE(near_colour(at(plain, cx, cy), at(coloured, cx, cy))) << "the model is not coloured";
-  const unsigned char* top = at(coloured, coloured.width - 30, coloured.height * 3 / 10);
-  const unsigned char* bottom = at(coloured, coloured.width - 30, coloured.height * 7 / 10);
+  bar_columns bar = find_colour_bar(coloured);
+  ASSERT_TRUE(bar.found()) << "no colour bar";
+  EXPECT_GT(bar.x0, coloured.width * 3 / 4) << "the colour bar is not at the right";
+  int bx = (bar.x0 + bar.x1) / 2, h = coloured.height;
+  const unsigned char* top = at(coloured, bx, h * 3 / 10);
+  const unsigned char* bottom = at(coloured, bx, h * 7 / 10);
   EXPECT_GT(top[0] + top[1], 300) << "the top of the colour bar is not light (yellow)";
   EXPECT_LT(bottom[0] + bottom[1], 200) << "the bottom of the colour bar is not dark";
   EXPECT_GT(top[1], top[2]) << "the top of the colour bar is not yellow";
+  // The labels, as the viewer shows them: the heights of the double
+  // pyramid run from -1.4142 to 1.4142; the bar's ends and its middle
+  // carry their values (four digits) to the bar's right, and the
+  // property's name stands above the bar. The bar spans the middle half of
+  // the picture's height.
+  auto label = [&](const std::string& text) { return find_text(coloured, text, is_dark, bar.x1 + 1, 0); };
+  text_place high = label("1.414"), middle = label("0"), low = label("-1.414");
+  text_place name = find_text(coloured, "height", is_dark, bar.x0 - 4, 0);
+  ASSERT_TRUE(high.found()) << "no label 1.414 beside the bar";
+  ASSERT_TRUE(middle.found()) << "no label 0 beside the bar";
+  ASSERT_TRUE(low.found()) << "no label -1.414 beside the bar";
+  ASSERT_TRUE(name.found()) << "no name (height) at the bar";
+  EXPECT_NEAR(high.centre_y(), h / 4, 3);
+  EXPECT_NEAR(middle.centre_y(), h / 2, 3);
+  EXPECT_NEAR(low.centre_y(), h * 3 / 4, 3);
+  for (const text_place& t : {high, middle, low}) EXPECT_LT(t.x - bar.x1, 16) << "a label far from the bar";
+  EXPECT_LT(name.y + name.height, h / 4 - high.height / 2) << "the name is not above the bar";
+  EXPECT_NEAR(name.x, bar.x0, 2) << "the name is not over the bar";
+  // Nothing else is written there: the name of another property, or the
+  // top label's value, are not.
+  EXPECT_FALSE(find_text(coloured, "visits", is_dark, bar.x0 - 4, 0).found());
+  EXPECT_FALSE(label("1.4142").found());
 }
 
 TEST(ColourBy, AMissingPropertyNamesTheNumericOnes) {

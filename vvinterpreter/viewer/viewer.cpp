@@ -7,7 +7,9 @@
 
 #include <unistd.h>
 
+#include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <future>
@@ -386,7 +388,7 @@ class viewer {
   void pick_at(double x, double y) {
     int w = 0, h = 0;
     glfwGetWindowSize(window_, &w, &h);
-    long index = pick_vertex(inspect_.positions(), cam_, w, h, x, y);
+    long index = pick_vertex(inspect_.positions(), cam_, scene_width(w), h, x, y);
     inspect_.pick_index(index);
     if (inspect_.picked_label()) pick(inspect_.picked_label());
   }
@@ -446,6 +448,7 @@ class viewer {
       // While the model's code runs, its state is not to be read: draw the
       // last drawing without the model's render blocks.
       session* model = busy() || render_failed_ ? nullptr : runner_.model();
+      bar_strip_ = double(colour_bar_strip(model, &drawing_, w)) / w;
       display_style style = style_;
       style.picked = inspect_.picked_index();
       style.neighbours = inspect_.neighbours();
@@ -472,7 +475,6 @@ class viewer {
     panel_actions a = draw_panel(panel());
     panel_shift_ = shift_beside_panel(a);
     edit_functions();
-    label_colour_bar();
     ImGui::Render();
     ImGui_ImplOpenGL2_RenderDrawData(ImGui::GetDrawData());
     if (!window_shot_path_.empty() && w > 0 && h > 0) {
@@ -554,30 +556,20 @@ class viewer {
     if (!error.empty()) show_error(error, error);
   }
 
-  // Half the panel's width, as a fraction of the window: the model is
+  // Half the panel's width, as a fraction of the scene's: the model is
   // centred in the part of the window the panel leaves free, when the
   // window is wide enough for both (else the panel, collapsible, floats).
   double shift_beside_panel(const panel_actions& a) const {
     int w = 0, h = 0;
     glfwGetWindowSize(window_, &w, &h);
-    if (a.panel_collapsed || w <= 0 || w < 2.2 * a.panel_right) return 0;
-    return a.panel_right / (2.0 * w);
+    int scene = scene_width(w);
+    if (a.panel_collapsed || scene <= 0 || scene < 2.2 * a.panel_right) return 0;
+    return a.panel_right / (2.0 * scene);
   }
 
-  // The numbers at the ends of the colour bar (drawn by draw_frame).
-  void label_colour_bar() {
-    if (!drawing_.has_values() || (runner_.model() && runner_.model()->has_block(&vv_plugin::render))) return;
-    ImVec2 size = ImGui::GetIO().DisplaySize;
-    ImDrawList* d = ImGui::GetForegroundDrawList();
-    char text[64];
-    const ImU32 ink = IM_COL32(30, 30, 40, 255);
-    std::snprintf(text, sizeof text, "%.4g", drawing_.value_max());
-    d->AddText(ImVec2(size.x - 44 - ImGui::CalcTextSize(text).x, size.y * 0.25f - 8), ink, text);
-    std::snprintf(text, sizeof text, "%.4g", drawing_.value_min());
-    d->AddText(ImVec2(size.x - 44 - ImGui::CalcTextSize(text).x, size.y * 0.75f - 8), ink, text);
-    d->AddText(ImVec2(size.x - 44 - ImGui::CalcTextSize(color_by_.c_str()).x, size.y * 0.75f + 8), ink,
-               color_by_.c_str());
-  }
+  // The width of the scene in a window w wide: the colour bar keeps a
+  // strip at the right (as draw_frame drew the last frame).
+  int scene_width(int w) const { return std::max(1, w - static_cast<int>(std::lround(bar_strip_ * w))); }
 
   std::string next_screenshot_name() {
     for (;;) {
@@ -666,7 +658,7 @@ class viewer {
       int w = 0, h = 0;
       glfwGetWindowSize(window_, &w, &h);
       if (dragging_ == 1) cam_.drag_rotate(mouse_x_, mouse_y_, x, y, w, h);
-      else cam_.pan(x - mouse_x_, y - mouse_y_, h);
+      else cam_.pan(x - mouse_x_, y - mouse_y_, scene_width(w), h);
       camera_moved_ = true;  // the user's view: auto-fit stops
     }
     mouse_x_ = x, mouse_y_ = y;
@@ -794,6 +786,7 @@ class viewer {
   bool camera_set_ = false;
   display_style style_;
   double panel_shift_ = 0;
+  double bar_strip_ = 0;  // the colour bar's strip, as a fraction of the window's width
   bool auto_fit_ = true, camera_moved_ = false;  // auto-fit until the user moves the view
   std::string color_by_;
   inspection inspect_;
