@@ -185,12 +185,29 @@ TEST(ViewerInteraction, PickSetAndSaveParameters) {
   EXPECT_EQ(slurp(model), saved);
 }
 
+// The panel's widest extent (Dear ImGui's window, at most 520 pixels wide
+// and 10 from the window's left edge).
+constexpr int panel_right_limit = 530;
+
+// The last row of the panel: its left padding column is the panel's dark
+// background from the title bar down to its bottom edge.
+int panel_bottom(const image& im) {
+  auto dark = [](const unsigned char* p) { return p[0] < 60 && p[1] < 60 && p[2] < 60; };
+  int bottom = -1;
+  for (int y = 30; y < im.height; ++y)
+    if (dark(im.at(12, y))) bottom = y;
+    else if (bottom >= 0) break;
+  return bottom;
+}
+
 TEST(ViewerInteraction, PickColourByDisplayAndPlots) {
   std::string d = fresh_dir("viewer_pick");
-  const std::string shaded = d + "flat.png", coloured = d + "coloured.png";
-  write_text(d + "script.txt", script({"step", "pick 5", "show flat on", "show points on", "screenshot " + shaded,
-                                       "color-by height", "screenshot " + coloured, "plots " + d + "plots.csv",
-                                       "quit"}));
+  const std::string shaded = d + "flat.png", coloured = d + "coloured.png", zoomed = d + "zoomed.png";
+  const std::string picked_window = d + "picked_window.png";
+  write_text(d + "script.txt",
+             script({"step", "pick 5", "window-screenshot " + picked_window, "show flat on", "show points on",
+                     "screenshot " + shaded, "color-by height", "screenshot " + coloured, "zoom 4",
+                     "screenshot " + zoomed, "plots " + d + "plots.csv", "quit"}));
   test_run::result r = viewer({"--script", d + "script.txt", inspect_model});
   ASSERT_FALSE(r.timed_out) << report(r);
   EXPECT_EQ(r.status, 0) << report(r);
@@ -201,6 +218,75 @@ TEST(ViewerInteraction, PickColourByDisplayAndPlots) {
   EXPECT_FALSE(slurp(shaded) == slurp(coloured)) << "color-by height did not change the picture";
   // Step 1 is odd: "even" has no value yet.
   EXPECT_EQ(slurp(d + "plots.csv"), "step,vertices,\"growth, %\"\n0,6,\n1,6,100\n");
+
+  // On the very frame of the pick, the panel shows the picked vertex and
+  // is sized for it: its last line is not cut off (Dear ImGui sizes a
+  // window from the frame before's content).
+  image window = load_png(picked_window);
+  ASSERT_TRUE(window.ok());
+  EXPECT_TRUE(find_text(window, "vertex 5", is_white, 0, 0, panel_right_limit).found()) << "the pick is not shown";
+  text_place last_line =
+      find_text(window, "ctrl+click: pick a vertex  esc: stop  ctrl+q: quit", is_light, 0, 0, panel_right_limit);
+  EXPECT_TRUE(last_line.found()) << "the panel's last line is cut off on the frame of the pick";
+  int bottom = panel_bottom(window);
+  EXPECT_GT(bottom, last_line.y + last_line.height) << "the panel ends above its last line";
+  EXPECT_LT(bottom, window.height - 1) << "the panel runs off the window";
+
+  // Zoomed in, the model fills the picture but stays left of the colour
+  // bar's strip: the bar never covers it.
+  image close = load_png(zoomed);
+  ASSERT_TRUE(close.ok());
+  bar_columns bar = find_colour_bar(close);
+  ASSERT_TRUE(bar.found()) << "no colour bar";
+  const unsigned char* background = close.at(close.width - 1, 0);
+  EXPECT_FALSE(near_colour(close.at(bar.x0 - 40, close.height / 2), background)) << "the model does not fill the view";
+  long covered = 0;
+  for (int y = 0; y < close.height; ++y)
+    for (int x = bar.x0 - 10; x < bar.x0; ++x) covered += !near_colour(close.at(x, y), background);
+  EXPECT_EQ(covered, 0) << "the model reaches into the colour bar's strip";
+  EXPECT_TRUE(find_text(close, "height", is_dark, bar.x0 - 4, 0).found()) << "the bar's name is covered";
+}
+
+// Korn-Spalding draws itself (a render block) and has seven parameters and
+// three plots: the panel stays within the window, the picked vertex is
+// shown near the top of the panel on the frame of the pick and drawn over
+// the model's own drawing, and each slider's value is readable beside the
+// slider, not under its grab.
+TEST(ViewerInteraction, PanelFitsThePickIsInViewAndHighlightedAndSliderValuesReadable) {
+  std::string d = fresh_dir("viewer_panel");
+  const std::string window_shot = d + "window.png", scene_shot = d + "scene.png";
+  // time_step in [0.001, 0.05]: 0.025 puts the grab in the slider's middle,
+  // where a value written on the slider would be.
+  write_text(d + "script.txt", script({"step 2", "set time_step=0.025", "pick 10", "window-screenshot " + window_shot,
+                                       "screenshot " + scene_shot, "quit"}));
+  test_run::result r = viewer({"--script", d + "script.txt", VV_SOURCE_DIR "/examples/korn_spalding.vvp"});
+  ASSERT_FALSE(r.timed_out) << report(r);
+  EXPECT_EQ(r.status, 0) << report(r);
+  EXPECT_TRUE(viewer_errors(r.err).empty()) << report(r);
+  EXPECT_TRUE(has(r.out, "vertex 10\n  in meshes: S\n")) << report(r);
+
+  // The picked vertex (red) and its neighbours (orange), over the green
+  // walls the model draws.
+  image scene = load_png(scene_shot);
+  ASSERT_TRUE(scene.ok());
+  const unsigned char red[3] = {217, 13, 13}, orange[3] = {255, 140, 0};
+  EXPECT_GT(count_colour(scene, red, 12), 100) << "the picked vertex is not highlighted";
+  EXPECT_GT(count_colour(scene, orange, 12), 100) << "its neighbours are not highlighted";
+
+  image window = load_png(window_shot);
+  ASSERT_TRUE(window.ok());
+  int bottom = panel_bottom(window);
+  EXPECT_GT(bottom, window.height / 2) << "no panel";
+  EXPECT_LT(bottom, window.height - 1) << "the panel runs off the window";
+  text_place picked = find_text(window, "vertex 10", is_white, 0, 0, panel_right_limit);
+  EXPECT_TRUE(picked.found()) << "the pick is not in view";
+  text_place value = find_text(window, "0.025", is_white, 0, 0, panel_right_limit);
+  ASSERT_TRUE(value.found()) << "the value of time_step is not readable";
+  const unsigned char grab[3] = {61, 133, 224};
+  EXPECT_EQ(count_colour(window, grab, 20, value.x - 3, value.y - 3, value.x + value.width + 3,
+                         value.y + value.height + 3),
+            0)
+      << "a slider's grab is on its value";
 }
 
 // A function file: control points on the line y = slope x.

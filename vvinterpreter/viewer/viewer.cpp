@@ -614,6 +614,7 @@ class viewer {
     s.value_max = drawing_.value_max();
     s.counts = inspect_.counts();
     s.picked = inspect_.text();
+    s.picked_label = inspect_.picked_label();
     s.file_objects = file_objects_;
     return s;
   }
