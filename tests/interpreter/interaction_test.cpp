@@ -200,6 +200,17 @@ int panel_bottom(const image& im) {
   return bottom;
 }
 
+// The column where the panel ends: at the row of the model's name, the
+// first dark pixel from the right (the scene is light there).
+int panel_right(const image& im) {
+  auto dark = [](const unsigned char* p) { return p[0] < 60 && p[1] < 60 && p[2] < 60; };
+  for (int x = im.width - 1; x >= 0; --x)
+    if (dark(im.at(x, 40))) return x;
+  return -1;
+}
+
+const unsigned char picked_red[3] = {217, 13, 13}, neighbour_orange[3] = {255, 140, 0};
+
 TEST(ViewerInteraction, PickColourByDisplayAndPlots) {
   std::string d = fresh_dir("viewer_pick");
   const std::string shaded = d + "flat.png", coloured = d + "coloured.png", zoomed = d + "zoomed.png";
@@ -231,6 +242,13 @@ TEST(ViewerInteraction, PickColourByDisplayAndPlots) {
   int bottom = panel_bottom(window);
   EXPECT_GT(bottom, last_line.y + last_line.height) << "the panel ends above its last line";
   EXPECT_LT(bottom, window.height - 1) << "the panel runs off the window";
+  // The model is drawn beside the panel as it is on that frame, not under
+  // it: the apex (red) and its four neighbours (orange) all show right of
+  // the panel.
+  int right = panel_right(window);
+  ASSERT_GT(right, 300) << "no panel";
+  EXPECT_GT(count_colour(window, picked_red, 12, right + 1, 0), 100) << "the picked vertex is not in view";
+  EXPECT_GT(count_colour(window, neighbour_orange, 12, right + 1, 0), 4 * 50) << "a neighbour is under the panel";
 
   // Zoomed in, the model fills the picture but stays left of the colour
   // bar's strip: the bar never covers it.
@@ -269,9 +287,8 @@ TEST(ViewerInteraction, PanelFitsThePickIsInViewAndHighlightedAndSliderValuesRea
   // walls the model draws.
   image scene = load_png(scene_shot);
   ASSERT_TRUE(scene.ok());
-  const unsigned char red[3] = {217, 13, 13}, orange[3] = {255, 140, 0};
-  EXPECT_GT(count_colour(scene, red, 12), 100) << "the picked vertex is not highlighted";
-  EXPECT_GT(count_colour(scene, orange, 12), 100) << "its neighbours are not highlighted";
+  EXPECT_GT(count_colour(scene, picked_red, 12), 100) << "the picked vertex is not highlighted";
+  EXPECT_GT(count_colour(scene, neighbour_orange, 12), 100) << "its neighbours are not highlighted";
 
   image window = load_png(window_shot);
   ASSERT_TRUE(window.ok());

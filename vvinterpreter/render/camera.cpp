@@ -101,9 +101,7 @@ glm::dmat4 camera::view() const {
 glm::dmat4 camera::projection(double aspect) const {
   double near = std::max(distance_ - radius_ * 4, distance_ * 1e-3);
   double far = distance_ + radius_ * 4;
-  // The shift moves the picture in normalised device coordinates (2 wide).
-  return glm::translate(glm::dmat4(1), glm::dvec3(2 * shift_, 0, 0)) *
-         glm::perspective(fov_y(aspect), aspect, near, far);
+  return glm::perspective(fov_y(aspect), aspect, near, far);
 }
 
 double camera::pixels_per_unit(int w, int h) const {

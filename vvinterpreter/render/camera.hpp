@@ -31,9 +31,6 @@ class camera {
   //! Looks at the same point from a direction: turned by azimuth about the
   //! world's y axis and raised by elevation above the xz-plane (degrees).
   void look_from(double azimuth, double elevation);
-  //! Moves the picture sideways by this fraction of the view's width (the
-  //! model beside the panel, not under it); picking sees the same.
-  void set_shift(double fraction) { shift_ = fraction; }
   //! Turns by degrees about the view's vertical and horizontal axes.
   void rotate_degrees(double yaw, double pitch);
   //! Moves the scene by a drag of (dx, dy) pixels in a w x h view.
@@ -62,7 +59,6 @@ class camera {
   glm::dquat orientation_{1, 0, 0, 0};
   glm::dvec3 fit_center_{0};
   double fit_distance_ = 5;
-  double shift_ = 0;
 };
 
 }  // namespace vvi

@@ -283,16 +283,17 @@ bool init_rendering(session* model, std::string& error) {
 }
 
 bool draw_frame(session* model, const mesh_drawing* fallback, const camera& cam, int width,
-                int height, std::string& error, const display_style& style) {
+                int height, std::string& error, const display_style& style, int left) {
   glViewport(0, 0, width, height);
   glClearColor(0.93f, 0.94f, 0.96f, 1);
   glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
   // The scene keeps left of the colour bar's strip, whatever the view.
   int strip = colour_bar_strip(model, fallback, width);
-  int scene_width = std::max(width - strip, 1);
-  if (strip) {
-    glViewport(0, 0, scene_width, height);
-    glScissor(0, 0, scene_width, height);  // wide lines and points too
+  left = std::clamp(left, 0, std::max(width - strip - 1, 0));
+  int scene_width = std::max(width - strip - left, 1);
+  if (strip || left) {
+    glViewport(left, 0, scene_width, height);
+    glScissor(left, 0, scene_width, height);  // wide lines and points too
     glEnable(GL_SCISSOR_TEST);
   }
   glEnable(GL_DEPTH_TEST);

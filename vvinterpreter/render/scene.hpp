@@ -80,11 +80,12 @@ class mesh_drawing {
 
 //! One frame: clear, the model's render block (or the default drawing of
 //! `fallback` in `style`), the picked vertex, then its render_screen block
-//! in pixel coordinates, and the colour bar when the drawing is coloured
-//! (the scene then keeps left of the bar's strip). Returns false with
-//! `error` set when a render block failed.
+//! in pixel coordinates, and the colour bar when the drawing is coloured.
+//! The scene is drawn right of `left` pixels (the viewer's panel) and left
+//! of the colour bar's strip. Returns false with `error` set when a render
+//! block failed.
 bool draw_frame(session* model, const mesh_drawing* fallback, const camera& cam, int width,
-                int height, std::string& error, const display_style& style = {});
+                int height, std::string& error, const display_style& style = {}, int left = 0);
 
 //! The width of the colour bar's strip at the right of a picture `width`
 //! pixels wide, as draw_frame draws it (0: no bar). The scene takes the
