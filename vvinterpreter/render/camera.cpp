@@ -78,8 +78,13 @@ void camera::rotate_degrees(double yaw, double pitch) {
   orientation_ = glm::normalize(glm::inverse(turn) * orientation_);
 }
 
-void camera::pan(double dx, double dy, int h) {
-  double per_pixel = 2 * distance_ * std::tan(glm::radians(fov_degrees) / 2) / std::max(h, 1);
+double camera::fov_y(double aspect) {
+  double half = glm::radians(fov_degrees) / 2;
+  return aspect >= 1 || aspect <= 0 ? 2 * half : 2 * std::atan(std::tan(half) / aspect);
+}
+
+void camera::pan(double dx, double dy, int w, int h) {
+  double per_pixel = 1 / pixels_per_unit(w, h);
   center_ -= orientation_ * glm::dvec3(dx * per_pixel, -dy * per_pixel, 0);
 }
 
@@ -96,13 +101,12 @@ glm::dmat4 camera::view() const {
 glm::dmat4 camera::projection(double aspect) const {
   double near = std::max(distance_ - radius_ * 4, distance_ * 1e-3);
   double far = distance_ + radius_ * 4;
-  // The shift moves the picture in normalised device coordinates (2 wide).
-  return glm::translate(glm::dmat4(1), glm::dvec3(2 * shift_, 0, 0)) *
-         glm::perspective(glm::radians(fov_degrees), aspect, near, far);
+  return glm::perspective(fov_y(aspect), aspect, near, far);
 }
 
-double camera::pixels_per_unit(int h) const {
-  return h / (2 * distance_ * std::tan(glm::radians(fov_degrees) / 2));
+double camera::pixels_per_unit(int w, int h) const {
+  h = std::max(h, 1);
+  return h / (2 * distance_ * std::tan(fov_y(double(w) / h) / 2));
 }
 
 }  // namespace vvi

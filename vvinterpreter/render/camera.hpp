@@ -21,7 +21,8 @@ struct box {
 
 class camera {
  public:
-  //! Shows all of b (its bounding sphere), looking along -z.
+  //! Shows all of b (its bounding sphere), looking along -z, in a view of
+  //! any shape (a view taller than wide sees more above and below).
   void fit(const box& b);
   //! Back to the view of the last fit.
   void reset();
@@ -30,13 +31,10 @@ class camera {
   //! Looks at the same point from a direction: turned by azimuth about the
   //! world's y axis and raised by elevation above the xz-plane (degrees).
   void look_from(double azimuth, double elevation);
-  //! Moves the picture sideways by this fraction of the view's width (the
-  //! model beside the panel, not under it); picking sees the same.
-  void set_shift(double fraction) { shift_ = fraction; }
   //! Turns by degrees about the view's vertical and horizontal axes.
   void rotate_degrees(double yaw, double pitch);
-  //! Moves the scene by a drag of (dx, dy) pixels in a view h pixels high.
-  void pan(double dx, double dy, int h);
+  //! Moves the scene by a drag of (dx, dy) pixels in a w x h view.
+  void pan(double dx, double dy, int w, int h);
   //! factor > 1 comes closer.
   void zoom(double factor);
 
@@ -47,18 +45,20 @@ class camera {
   glm::dmat4 view() const;
   glm::dmat4 projection(double aspect) const;
   glm::dvec3 eye() const;
-  //! Pixels per unit of length at the point looked at, in a view h pixels high.
-  double pixels_per_unit(int h) const;
+  //! Pixels per unit of length at the point looked at, in a w x h view.
+  double pixels_per_unit(int w, int h) const;
 
  private:
+  //! The field of view across the view's narrower side.
   static constexpr double fov_degrees = 35;
+  //! The vertical field of view, in radians, of a view of this aspect.
+  static double fov_y(double aspect);
   glm::dvec3 center_{0};
   double distance_ = 5;
   double radius_ = 1;
   glm::dquat orientation_{1, 0, 0, 0};
   glm::dvec3 fit_center_{0};
   double fit_distance_ = 5;
-  double shift_ = 0;
 };
 
 }  // namespace vvi

@@ -72,6 +72,7 @@ void point_at(unsigned buffer) {
 mesh_drawing::~mesh_drawing() { release(); }
 
 void mesh_drawing::release() {
+  bar_.release();
   unsigned buffers[] = {vertex_buffer_, triangle_buffer_, line_buffer_, flat_buffer_};
   if (vertex_buffer_) glDeleteBuffers(4, buffers);
   vertex_buffer_ = triangle_buffer_ = line_buffer_ = flat_buffer_ = 0;
@@ -103,6 +104,7 @@ void mesh_drawing::update(const vv_geometry& g, bool flat) {
         colours[i] = colour_ramp(!std::isfinite(g.values[i]) ? std::nan("")
                                  : span > 0                  ? (g.values[i] - value_min_) / span
                                                              : 0.5);
+      bar_.set(value_min_, value_max_, g.value_field ? g.value_field : "");
     }
     std::vector<glm::dvec3> normals(n, glm::dvec3(0));
     for (std::size_t i = 0; i < n; ++i) bounds_.add(position_of(g, std::uint32_t(i)));
@@ -198,25 +200,42 @@ void mesh_drawing::draw(const display_style& style, bool edges_visible) const {
     glDrawArrays(GL_POINTS, 0, GLsizei(vertex_count_));
   }
   glDisableClientState(GL_COLOR_ARRAY);
-  // The picked vertex and its neighbourhood, on top of everything.
-  if (style.picked >= 0 && std::size_t(style.picked) < vertex_count_) {
-    glDisable(GL_DEPTH_TEST);
-    glPointSize(8);
-    glColor3f(1.0f, 0.55f, 0.0f);
-    glDrawElements(GL_POINTS, GLsizei(style.neighbours.size()), GL_UNSIGNED_INT, style.neighbours.data());
-    glPointSize(12);
-    glColor3f(0.85f, 0.05f, 0.05f);
-    glDrawArrays(GL_POINTS, GLint(style.picked), 1);
-    glEnable(GL_DEPTH_TEST);
-  }
   glPointSize(1);
   glDisableClientState(GL_VERTEX_ARRAY);
   glBindBuffer(GL_ARRAY_BUFFER, 0);
 }
 
-bool edges_visible(const mesh_drawing& d, const display_style& style, const camera& cam, int height) {
+void mesh_drawing::draw_pick(const display_style& style) const {
+  if (!vertex_buffer_ || style.picked < 0 || std::size_t(style.picked) >= vertex_count_) return;
+  // A model's render block may leave any state behind: set all that counts.
+  glPushAttrib(GL_ENABLE_BIT | GL_CURRENT_BIT | GL_POINT_BIT);
+  glPushClientAttrib(GL_CLIENT_VERTEX_ARRAY_BIT);
+  glDisable(GL_LIGHTING);
+  glDisable(GL_TEXTURE_2D);
+  glDisable(GL_BLEND);
+  glDisable(GL_DEPTH_TEST);  // on top of everything
+  glDisable(GL_POINT_SMOOTH);
+  glDisableClientState(GL_NORMAL_ARRAY);
+  glDisableClientState(GL_COLOR_ARRAY);
+  glDisableClientState(GL_TEXTURE_COORD_ARRAY);
+  glEnableClientState(GL_VERTEX_ARRAY);
+  glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, 0);  // the neighbours' indices are in memory
+  point_at(vertex_buffer_);
+  glPointSize(8);
+  glColor3f(pick_colours::neighbour[0], pick_colours::neighbour[1], pick_colours::neighbour[2]);
+  glDrawElements(GL_POINTS, GLsizei(style.neighbours.size()), GL_UNSIGNED_INT, style.neighbours.data());
+  glPointSize(12);
+  glColor3f(pick_colours::picked[0], pick_colours::picked[1], pick_colours::picked[2]);
+  glDrawArrays(GL_POINTS, GLint(style.picked), 1);
+  glBindBuffer(GL_ARRAY_BUFFER, 0);
+  glPopClientAttrib();
+  glPopAttrib();
+}
+
+bool edges_visible(const mesh_drawing& d, const display_style& style, const camera& cam, int width, int height) {
   constexpr double fewest_pixels = 6;  // shorter edges would fill the picture with lines
-  return style.edges && (!style.auto_hide_edges || d.mean_edge_length() * cam.pixels_per_unit(height) >= fewest_pixels);
+  return style.edges &&
+         (!style.auto_hide_edges || d.mean_edge_length() * cam.pixels_per_unit(width, height) >= fewest_pixels);
 }
 
 namespace {
@@ -232,24 +251,15 @@ void use_pixel_coordinates(int width, int height) {
   glDisable(GL_LIGHTING);
 }
 
-// A vertical bar of the ramp at the right edge, low values at the bottom
-// (the viewer writes the numbers beside it).
-void draw_colour_bar(int width, int height) {
-  use_pixel_coordinates(width, height);
-  double x0 = width - 40, x1 = width - 20, y0 = height * 0.25, y1 = height * 0.75;
-  glBegin(GL_QUAD_STRIP);
-  for (int i = 0; i <= 32; ++i) {
-    rgb c = colour_ramp(i / 32.0);
-    glColor3f(c[0], c[1], c[2]);
-    double y = y0 + (y1 - y0) * i / 32.0;
-    glVertex2d(x0, y);
-    glVertex2d(x1, y);
-  }
-  glEnd();
-  glEnable(GL_DEPTH_TEST);
+bool shows_colour_bar(session* model, const mesh_drawing* fallback) {
+  return fallback && fallback->has_values() && !(model && model->has_block(&vv_plugin::render));
 }
 
 }  // namespace
+
+int colour_bar_strip(session* model, const mesh_drawing* fallback, int width) {
+  return shows_colour_bar(model, fallback) ? fallback->bar().strip_width(width) : 0;
+}
 
 box view_box(session* model, const mesh_drawing* drawing) {
   box b;
@@ -273,15 +283,24 @@ bool init_rendering(session* model, std::string& error) {
 }
 
 bool draw_frame(session* model, const mesh_drawing* fallback, const camera& cam, int width,
-                int height, std::string& error, const display_style& style) {
+                int height, std::string& error, const display_style& style, int left) {
   glViewport(0, 0, width, height);
   glClearColor(0.93f, 0.94f, 0.96f, 1);
   glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+  // The scene keeps left of the colour bar's strip, whatever the view.
+  int strip = colour_bar_strip(model, fallback, width);
+  left = std::clamp(left, 0, std::max(width - strip - 1, 0));
+  int scene_width = std::max(width - strip - left, 1);
+  if (strip || left) {
+    glViewport(left, 0, scene_width, height);
+    glScissor(left, 0, scene_width, height);  // wide lines and points too
+    glEnable(GL_SCISSOR_TEST);
+  }
   glEnable(GL_DEPTH_TEST);
   glDepthFunc(GL_LEQUAL);
   glShadeModel(GL_SMOOTH);
   glMatrixMode(GL_PROJECTION);
-  glLoadMatrixd(glm::value_ptr(cam.projection(double(width) / std::max(height, 1))));
+  glLoadMatrixd(glm::value_ptr(cam.projection(double(scene_width) / std::max(height, 1))));
   glMatrixMode(GL_MODELVIEW);
   // A headlight: placed in eye coordinates before the view is loaded.
   glLoadIdentity();
@@ -302,14 +321,27 @@ bool draw_frame(session* model, const mesh_drawing* fallback, const camera& cam,
   if (model && model->has_block(&vv_plugin::render)) {
     if (!model->render()) error = model->error(), ok = false;
   } else if (fallback) {
-    fallback->draw(style, edges_visible(*fallback, style, cam, height));
+    fallback->draw(style, edges_visible(*fallback, style, cam, scene_width, height));
   }
+  if (ok && fallback) {
+    // In the camera's view again: a render block may have changed it.
+    glMatrixMode(GL_PROJECTION);
+    glLoadMatrixd(glm::value_ptr(cam.projection(double(scene_width) / std::max(height, 1))));
+    glMatrixMode(GL_MODELVIEW);
+    glLoadMatrixd(glm::value_ptr(cam.view()));
+    fallback->draw_pick(style);
+  }
+  glDisable(GL_SCISSOR_TEST);
+  glViewport(0, 0, width, height);
   if (ok && model && model->has_block(&vv_plugin::render_screen)) {
     use_pixel_coordinates(width, height);
     if (!model->render_screen()) error = model->error(), ok = false;
   }
-  if (ok && fallback && fallback->has_values() && !(model && model->has_block(&vv_plugin::render)))
-    draw_colour_bar(width, height);
+  if (ok && strip) {
+    use_pixel_coordinates(width, height);
+    fallback->bar().draw(width, height);
+    glEnable(GL_DEPTH_TEST);
+  }
   glDisable(GL_LIGHTING);
   return ok;
 }

@@ -10,10 +10,18 @@
 #include <vv/plugin/plugin.hpp>
 
 #include "render/camera.hpp"
+#include "render/colour_bar.hpp"
 
 namespace vvi {
 
 class session;
+
+//! The colours of the picked vertex and of its neighbours (the panel's
+//! inspector names them by these colours too).
+namespace pick_colours {
+inline constexpr rgb picked = {0.85f, 0.05f, 0.05f};
+inline constexpr rgb neighbour = {1.0f, 0.55f, 0.0f};
+}  // namespace pick_colours
 
 //! How the default drawing shows a mesh (the viewer's display toggles).
 struct display_style {
@@ -31,7 +39,7 @@ struct display_style {
 
 //! A mesh's faces and edges in vertex buffers, for drawing meshes of
 //! millions of triangles at interactive rates; coloured by the geometry's
-//! values when it carries some (a colour bar shows the range).
+//! values when it carries some (its colour bar shows the range).
 class mesh_drawing {
  public:
   mesh_drawing() = default;
@@ -43,6 +51,9 @@ class mesh_drawing {
   //! face (the faces get their own corners).
   void update(const vv_geometry& g, bool flat = false);
   void draw(const display_style& style, bool edges_visible) const;
+  //! The picked vertex and its neighbours, over whatever is drawn (also
+  //! over a model that draws itself).
+  void draw_pick(const display_style& style) const;
   const box& bounds() const { return bounds_; }
   std::size_t triangles() const { return triangle_indices_ / 3; }
   std::size_t edges() const { return line_indices_ / 2; }
@@ -51,6 +62,9 @@ class mesh_drawing {
   bool has_values() const { return has_values_; }
   double value_min() const { return value_min_; }
   double value_max() const { return value_max_; }
+  //! The bar of the values' colours, labelled with the range and the
+  //! property's name (the geometry's value_field).
+  const colour_bar& bar() const { return bar_; }
   //! Frees the GL buffers (before the context goes away).
   void release();
 
@@ -61,18 +75,26 @@ class mesh_drawing {
   double mean_edge_ = 0;
   bool has_values_ = false;
   double value_min_ = 0, value_max_ = 0;
+  colour_bar bar_;
 };
 
 //! One frame: clear, the model's render block (or the default drawing of
-//! `fallback` in `style`), then its render_screen block in pixel
-//! coordinates, and the colour bar when the drawing is coloured. Returns
-//! false with `error` set when a render block failed.
+//! `fallback` in `style`), the picked vertex, then its render_screen block
+//! in pixel coordinates, and the colour bar when the drawing is coloured.
+//! The scene is drawn right of `left` pixels (the viewer's panel) and left
+//! of the colour bar's strip. Returns false with `error` set when a render
+//! block failed.
 bool draw_frame(session* model, const mesh_drawing* fallback, const camera& cam, int width,
-                int height, std::string& error, const display_style& style = {});
+                int height, std::string& error, const display_style& style = {}, int left = 0);
+
+//! The width of the colour bar's strip at the right of a picture `width`
+//! pixels wide, as draw_frame draws it (0: no bar). The scene takes the
+//! rest: picking and panning must see the same.
+int colour_bar_strip(session* model, const mesh_drawing* fallback, int width);
 
 //! Whether the edges are drawn: asked for, and (with auto_hide_edges) the
 //! mean edge at least a few pixels long in this view.
-bool edges_visible(const mesh_drawing& d, const display_style& style, const camera& cam, int height);
+bool edges_visible(const mesh_drawing& d, const display_style& style, const camera& cam, int width, int height);
 
 //! The box the view must show: the proxy's view volume when the program set
 //! one, else the drawing's bounds, else the unit cube.

@@ -1,13 +1,42 @@
 #include "viewer/panel.hpp"
 
 #include <imgui.h>
+#include <imgui_internal.h>  // the window's content extent (see content_changed_size)
+
+#include <algorithm>
+#include <cmath>
 
 namespace vvi {
 
-panel_actions draw_panel(const panel_state& s) {
+namespace {
+
+constexpr float panel_margin = 10;  // between the panel and the window's edges
+
+// Whether the panel's content this frame needs another size than the
+// content of the frame before. Dear ImGui sizes an auto-resizing window from
+// the frame before's content, so on such a frame the window has the old
+// size: grown content would be cut off at the bottom (or the right).
+bool content_changed_size() {
+  ImGuiWindow* w = ImGui::GetCurrentWindow();
+  ImVec2 extent(std::max(w->DC.CursorMaxPos.x, w->DC.IdealMaxPos.x) - w->DC.CursorStartPos.x,
+                std::max(w->DC.CursorMaxPos.y, w->DC.IdealMaxPos.y) - w->DC.CursorStartPos.y);
+  ImGuiStorage* kept = ImGui::GetStateStorage();
+  ImGuiID x = ImGui::GetID("##content width"), y = ImGui::GetID("##content height");
+  bool changed = std::abs(kept->GetFloat(x, -1) - extent.x) >= 0.5f || std::abs(kept->GetFloat(y, -1) - extent.y) >= 0.5f;
+  kept->SetFloat(x, extent.x);
+  kept->SetFloat(y, extent.y);
+  return changed;
+}
+
+// The panel, once; `changed_size`: its content needs another size than
+// the window had.
+panel_actions draw_panel_once(const panel_state& s, bool& changed_size) {
   panel_actions a;
-  ImGui::SetNextWindowPos(ImVec2(10, 10), ImGuiCond_FirstUseEver);
-  ImGui::SetNextWindowSizeConstraints(ImVec2(300, 0), ImVec2(520, 2000));
+  changed_size = false;
+  ImVec2 display = ImGui::GetIO().DisplaySize;
+  ImGui::SetNextWindowPos(ImVec2(panel_margin, panel_margin), ImGuiCond_FirstUseEver);
+  // Never taller than the window: what does not fit scrolls.
+  ImGui::SetNextWindowSizeConstraints(ImVec2(300, 0), ImVec2(520, std::max(100.0f, display.y - 2 * panel_margin)));
   bool open = ImGui::Begin("vv", nullptr, ImGuiWindowFlags_AlwaysAutoResize);
   a.panel_collapsed = !open;
   a.panel_right = ImGui::GetWindowPos().x + ImGui::GetWindowSize().x;
@@ -63,15 +92,33 @@ panel_actions draw_panel(const panel_state& s) {
     ImGui::PopStyleColor();
   }
   if (!s.warnings.empty() && ImGui::CollapsingHeader("Compiler warnings")) ImGui::TextWrapped("%s", s.warnings.c_str());
+  draw_inspector(s, a);
   draw_parameters(s, a);
   draw_plots(s);
   draw_display(s, a);
-  draw_inspector(s, a);
   ImGui::Separator();
   ImGui::TextDisabled("drag: rotate   right-drag: pan   wheel: zoom");
   ImGui::TextDisabled("space: step  a: animate  w: rewind  f: fit  s: screenshot");
   ImGui::TextDisabled("ctrl+click: pick a vertex  esc: stop  ctrl+q: quit");
+  changed_size = content_changed_size();
   ImGui::End();
+  return a;
+}
+
+}  // namespace
+
+panel_actions draw_panel(const panel_state& s) {
+  bool changed_size = false;
+  panel_actions a = draw_panel_once(s, changed_size);
+  if (!changed_size) return a;
+  // Lay the frame out again, now that the window knows its content: nothing
+  // has been drawn yet. The second pass sees the same input without new
+  // events (no click happens twice); the actions are the first pass's.
+  ImGui::EndFrame();
+  ImGui::NewFrame();
+  panel_actions again = draw_panel_once(s, changed_size);
+  a.panel_right = again.panel_right;
+  a.panel_collapsed = again.panel_collapsed;
   return a;
 }
 

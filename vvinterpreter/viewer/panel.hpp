@@ -1,5 +1,10 @@
 // The viewer's control panel (Dear ImGui): buttons in, actions out. It
 // only shows state; the viewer decides what the actions do.
+//
+// Its layout: the model's state and buttons, then the picked vertex (when
+// there is one: near the top, so a pick is always in view), then the
+// sections Parameters, Plots and Display, each folding away. The panel is
+// never taller than the window; what does not fit scrolls.
 #pragma once
 
 #include <string>
@@ -56,6 +61,7 @@ struct panel_state {
   double value_min = 0, value_max = 0;
   mesh_counts counts;
   std::string picked;  // the picked vertex described, or ""
+  unsigned picked_label = 0;  // a new label opens the inspector again
   std::vector<std::string> file_objects;  // files the model reads, reread on save
 };
 
@@ -76,11 +82,13 @@ struct panel_actions {
 };
 
 //! The sections below the model's controls (viewer/panel_sections.cpp).
+void draw_inspector(const panel_state& s, panel_actions& a);
 void draw_parameters(const panel_state& s, panel_actions& a);
 void draw_plots(const panel_state& s);
 void draw_display(const panel_state& s, panel_actions& a);
-void draw_inspector(const panel_state& s, panel_actions& a);
 
+//! Draws the panel; the first window of the frame (when its content
+//! changed size, the frame is laid out again: see panel.cpp).
 panel_actions draw_panel(const panel_state& s);
 
 }  // namespace vvi

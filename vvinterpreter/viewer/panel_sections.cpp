@@ -1,7 +1,8 @@
-// The panel's sections for looking into a model: its parameters, its plots,
-// how it is drawn, and the picked vertex.
+// The panel's sections for looking into a model: the picked vertex, its
+// parameters, its plots, and how it is drawn.
 #include <imgui.h>
 
+#include <algorithm>
 #include <cfloat>
 #include <cstdio>
 #include <cstdlib>
@@ -23,25 +24,38 @@ std::string number_text(double v) {
   return buf;
 }
 
-// One parameter's control: a checkbox, a slider over its range, or a field.
-void parameter_control(const parameter_view& p, panel_actions& a) {
+// One parameter as a row of the table: its name; a slider over its range
+// (no text on it: the grab would cover it), or a checkbox; and the value
+// in a field of its own, where an exact value can be typed (Enter).
+void parameter_row(const parameter_view& p, panel_actions& a) {
   ImGui::PushID(p.name.c_str());
+  ImGui::TableNextRow();
+  ImGui::TableNextColumn();
+  ImGui::AlignTextToFramePadding();
+  ImGui::TextUnformatted(p.name.c_str());
+  if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s %s, line %d", p.type.c_str(), p.name.c_str(), p.line);
+  ImGui::TableNextColumn();
+  ImGui::SetNextItemWidth(-FLT_MIN);
+  const ImGuiSliderFlags slider = ImGuiSliderFlags_NoInput;  // typing goes to the value's field
+  const ImGuiInputTextFlags on_enter = ImGuiInputTextFlags_EnterReturnsTrue;
   if (p.type == "bool") {
     bool on = p.number != 0;
-    if (ImGui::Checkbox(p.name.c_str(), &on)) a.set_parameters.emplace_back(p.name, on ? "true" : "false");
+    if (ImGui::Checkbox("##on", &on)) a.set_parameters.emplace_back(p.name, on ? "true" : "false");
   } else if (p.type == "int" || p.type == "unsigned") {
     int v = static_cast<int>(p.number);
-    bool changed = p.has_range ? ImGui::SliderInt(p.name.c_str(), &v, int(p.lo), int(p.hi))
-                               : ImGui::InputInt(p.name.c_str(), &v);
+    bool changed = p.has_range && ImGui::SliderInt("##slider", &v, int(p.lo), int(p.hi), "", slider);
+    ImGui::TableNextColumn();
+    ImGui::SetNextItemWidth(-FLT_MIN);
+    changed |= ImGui::InputInt("##value", &v, 0, 0, on_enter);
     if (changed) a.set_parameters.emplace_back(p.name, std::to_string(v));
   } else {
     double v = p.number;
-    bool changed = p.has_range ? ImGui::SliderScalar(p.name.c_str(), ImGuiDataType_Double, &v, &p.lo, &p.hi, "%.6g")
-                               : ImGui::InputDouble(p.name.c_str(), &v, 0, 0, "%.6g",
-                                                    ImGuiInputTextFlags_EnterReturnsTrue);
+    bool changed = p.has_range && ImGui::SliderScalar("##slider", ImGuiDataType_Double, &v, &p.lo, &p.hi, "", slider);
+    ImGui::TableNextColumn();
+    ImGui::SetNextItemWidth(-FLT_MIN);
+    changed |= ImGui::InputDouble("##value", &v, 0, 0, "%.6g", on_enter);
     if (changed) a.set_parameters.emplace_back(p.name, number_text(p.type == "float" ? double(float(v)) : v));
   }
-  if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s %s, line %d", p.type.c_str(), p.name.c_str(), p.line);
   ImGui::PopID();
 }
 
@@ -51,7 +65,13 @@ void draw_parameters(const panel_state& s, panel_actions& a) {
   if (s.parameters.empty() || !ImGui::CollapsingHeader("Parameters", ImGuiTreeNodeFlags_DefaultOpen)) return;
   bool disabled = !s.has_model || s.busy;
   if (disabled) ImGui::BeginDisabled();
-  for (const parameter_view& p : s.parameters) parameter_control(p, a);
+  if (ImGui::BeginTable("##parameters", 3, ImGuiTableFlags_SizingFixedFit)) {
+    ImGui::TableSetupColumn("name", ImGuiTableColumnFlags_WidthFixed);
+    ImGui::TableSetupColumn("slider", ImGuiTableColumnFlags_WidthFixed, 170);
+    ImGui::TableSetupColumn("value", ImGuiTableColumnFlags_WidthFixed, 90);
+    for (const parameter_view& p : s.parameters) parameter_row(p, a);
+    ImGui::EndTable();
+  }
   bool rewind = s.rewind_on_change;
   if (ImGui::Checkbox("Rewind on change (run again to this step)", &rewind)) a.toggle_rewind_on_change = true;
   a.save_parameters = ImGui::Button("Save to file");
@@ -104,13 +124,37 @@ void draw_display(const panel_state& s, panel_actions& a) {
 }
 
 void draw_inspector(const panel_state& s, panel_actions& a) {
-  if (!ImGui::CollapsingHeader("Inspect", ImGuiTreeNodeFlags_DefaultOpen)) return;
-  if (s.picked.empty()) {
-    ImGui::TextDisabled("ctrl+click a vertex to see its properties and neighbourhood");
+  if (s.picked.empty()) return;
+  // A new pick opens the section, also after the user folded it.
+  ImGuiStorage* kept = ImGui::GetStateStorage();
+  ImGuiID shown = ImGui::GetID("##label shown");
+  if (kept->GetInt(shown, 0) != int(s.picked_label)) ImGui::SetNextItemOpen(true);
+  kept->SetInt(shown, int(s.picked_label));
+  std::string first_line = s.picked.substr(0, s.picked.find('\n'));
+  if (!ImGui::CollapsingHeader(("Inspect: " + first_line + "###inspect").c_str(), ImGuiTreeNodeFlags_DefaultOpen))
     return;
-  }
+  // The colours it has in the picture.
+  auto swatch = [](const char* id, const rgb& c, const char* what) {
+    ImGui::ColorButton(id, ImVec4(c[0], c[1], c[2], 1), ImGuiColorEditFlags_NoTooltip, ImVec2(12, 12));
+    ImGui::SameLine(0, 4);
+    ImGui::TextUnformatted(what);
+  };
+  swatch("##picked", pick_colours::picked, "picked");
+  ImGui::SameLine();
+  swatch("##neighbours", pick_colours::neighbour, "neighbours");
+  ImGui::SameLine();
+  a.clear_pick = ImGui::SmallButton("Clear");
+  // A vertex with many neighbours has a long description: it scrolls in a
+  // box of its own, so the sections below stay within reach.
+  constexpr int most_lines = 14;
+  int lines = int(std::count(s.picked.begin(), s.picked.end(), '\n')) + 1;
+  ImVec2 text = ImGui::CalcTextSize(s.picked.c_str());
+  const ImGuiStyle& style = ImGui::GetStyle();
+  float height = std::min(lines, most_lines) * ImGui::GetTextLineHeight() + 2 * style.WindowPadding.y;
+  float width = text.x + 2 * style.WindowPadding.x + (lines > most_lines ? style.ScrollbarSize : 0);
+  ImGui::BeginChild("##picked", ImVec2(std::min(width, 490.0f), height), true);
   ImGui::TextUnformatted(s.picked.c_str());
-  a.clear_pick = ImGui::Button("Clear");
+  ImGui::EndChild();
 }
 
 }  // namespace vvi

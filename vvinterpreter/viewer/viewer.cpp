@@ -7,7 +7,9 @@
 
 #include <unistd.h>
 
+#include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <future>
@@ -386,7 +388,8 @@ class viewer {
   void pick_at(double x, double y) {
     int w = 0, h = 0;
     glfwGetWindowSize(window_, &w, &h);
-    long index = pick_vertex(inspect_.positions(), cam_, w, h, x, y);
+    scene_area scene = scene_in_window(w);
+    long index = pick_vertex(inspect_.positions(), cam_, scene.width, h, x - scene.left, y);
     inspect_.pick_index(index);
     if (inspect_.picked_label()) pick(inspect_.picked_label());
   }
@@ -439,6 +442,15 @@ class viewer {
     run_script();
     next_job(t);
 
+    // The panel first (Dear ImGui draws nothing yet): the scene is placed
+    // beside the panel as it is on this frame.
+    ImGui_ImplOpenGL2_NewFrame();
+    ImGui_ImplGlfw_NewFrame();
+    ImGui::NewFrame();
+    panel_actions a = draw_panel(panel());
+    panel_right_ = a.panel_collapsed ? 0 : a.panel_right;
+    edit_functions();
+
     int w = 0, h = 0;
     glfwGetFramebufferSize(window_, &w, &h);
     if (w > 0 && h > 0) {
@@ -446,11 +458,12 @@ class viewer {
       // While the model's code runs, its state is not to be read: draw the
       // last drawing without the model's render blocks.
       session* model = busy() || render_failed_ ? nullptr : runner_.model();
+      bar_strip_ = double(colour_bar_strip(model, &drawing_, w)) / w;
       display_style style = style_;
       style.picked = inspect_.picked_index();
       style.neighbours = inspect_.neighbours();
-      auto draw = [&] {
-        if (!draw_frame(model, &drawing_, cam_, w, h, e, style)) {
+      auto draw = [&](int left) {
+        if (!draw_frame(model, &drawing_, cam_, w, h, e, style, left)) {
           render_failed_ = true;  // once: the same error would repeat every frame
           show_error(e, e);
         }
@@ -458,21 +471,14 @@ class viewer {
       // Screenshots frame the model in the whole picture; the window shows
       // it beside the panel.
       if (!busy() && (record_frame_ || !shot_path_.empty())) {
-        cam_.set_shift(0);
-        draw();
+        draw(0);
         capture(w, h);
       }
-      cam_.set_shift(panel_shift_);
-      draw();
+      int window_w = 0, window_h = 0;
+      glfwGetWindowSize(window_, &window_w, &window_h);
+      draw(window_w > 0 ? static_cast<int>(std::lround(double(scene_in_window(window_w).left) * w / window_w)) : 0);
       if (!busy()) drawn_since_job_ = true;
     }
-    ImGui_ImplOpenGL2_NewFrame();
-    ImGui_ImplGlfw_NewFrame();
-    ImGui::NewFrame();
-    panel_actions a = draw_panel(panel());
-    panel_shift_ = shift_beside_panel(a);
-    edit_functions();
-    label_colour_bar();
     ImGui::Render();
     ImGui_ImplOpenGL2_RenderDrawData(ImGui::GetDrawData());
     if (!window_shot_path_.empty() && w > 0 && h > 0) {
@@ -554,29 +560,18 @@ class viewer {
     if (!error.empty()) show_error(error, error);
   }
 
-  // Half the panel's width, as a fraction of the window: the model is
-  // centred in the part of the window the panel leaves free, when the
-  // window is wide enough for both (else the panel, collapsible, floats).
-  double shift_beside_panel(const panel_actions& a) const {
-    int w = 0, h = 0;
-    glfwGetWindowSize(window_, &w, &h);
-    if (a.panel_collapsed || w <= 0 || w < 2.2 * a.panel_right) return 0;
-    return a.panel_right / (2.0 * w);
-  }
-
-  // The numbers at the ends of the colour bar (drawn by draw_frame).
-  void label_colour_bar() {
-    if (!drawing_.has_values() || (runner_.model() && runner_.model()->has_block(&vv_plugin::render))) return;
-    ImVec2 size = ImGui::GetIO().DisplaySize;
-    ImDrawList* d = ImGui::GetForegroundDrawList();
-    char text[64];
-    const ImU32 ink = IM_COL32(30, 30, 40, 255);
-    std::snprintf(text, sizeof text, "%.4g", drawing_.value_max());
-    d->AddText(ImVec2(size.x - 44 - ImGui::CalcTextSize(text).x, size.y * 0.25f - 8), ink, text);
-    std::snprintf(text, sizeof text, "%.4g", drawing_.value_min());
-    d->AddText(ImVec2(size.x - 44 - ImGui::CalcTextSize(text).x, size.y * 0.75f - 8), ink, text);
-    d->AddText(ImVec2(size.x - 44 - ImGui::CalcTextSize(color_by_.c_str()).x, size.y * 0.75f + 8), ink,
-               color_by_.c_str());
+  // Where the scene is drawn in a window w pixels wide: right of the panel
+  // when that leaves it room enough (else the panel, which folds away,
+  // floats over it), and left of the colour bar's strip (as draw_frame
+  // drew the last frame).
+  struct scene_area {
+    int left, width;
+  };
+  scene_area scene_in_window(int w) const {
+    int right = w - static_cast<int>(std::lround(bar_strip_ * w));
+    int left = static_cast<int>(panel_right_) + 6;
+    if (right - left < std::max(300, w / 3)) left = 0;
+    return {left, std::max(1, right - left)};
   }
 
   std::string next_screenshot_name() {
@@ -622,6 +617,7 @@ class viewer {
     s.value_max = drawing_.value_max();
     s.counts = inspect_.counts();
     s.picked = inspect_.text();
+    s.picked_label = inspect_.picked_label();
     s.file_objects = file_objects_;
     return s;
   }
@@ -666,7 +662,7 @@ class viewer {
       int w = 0, h = 0;
       glfwGetWindowSize(window_, &w, &h);
       if (dragging_ == 1) cam_.drag_rotate(mouse_x_, mouse_y_, x, y, w, h);
-      else cam_.pan(x - mouse_x_, y - mouse_y_, h);
+      else cam_.pan(x - mouse_x_, y - mouse_y_, scene_in_window(w).width, h);
       camera_moved_ = true;  // the user's view: auto-fit stops
     }
     mouse_x_ = x, mouse_y_ = y;
@@ -793,7 +789,8 @@ class viewer {
   camera cam_;
   bool camera_set_ = false;
   display_style style_;
-  double panel_shift_ = 0;
+  float panel_right_ = 0;  // where the open panel ends, in window pixels
+  double bar_strip_ = 0;  // the colour bar's strip, as a fraction of the window's width
   bool auto_fit_ = true, camera_moved_ = false;  // auto-fit until the user moves the view
   std::string color_by_;
   inspection inspect_;
