@@ -1,10 +1,14 @@
 #include "compile/model_cache.hpp"
 
+#include <fcntl.h>
 #include <sys/stat.h>
+#include <unistd.h>
 
+#include <cerrno>
 #include <cstdio>
 #include <ctime>
 #include <filesystem>
+#include <memory>
 #include <random>
 #include <sstream>
 
@@ -28,10 +32,29 @@ namespace {
 
 const char* const manifest_name = "manifest";
 
+// The checksum of a file's bytes, read in one piece (this runs on every
+// start of a cached model: no stream copies).
 std::string content_of(const std::string& path, bool& readable) {
-  std::optional<std::string> text = read_file(path);
-  readable = text.has_value();
-  return content_hash().add(text.value_or("")).hex();
+  readable = false;
+  int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
+  if (fd < 0) return "";
+  struct stat st {};
+  std::unique_ptr<char[]> bytes;  // not a string: zero-filling a megabyte first would double the cost
+  std::size_t size = 0;
+  if (fstat(fd, &st) == 0 && S_ISREG(st.st_mode)) {
+    size = static_cast<std::size_t>(st.st_size);
+    bytes.reset(new char[size]);
+    std::size_t got = 0;
+    while (got < size) {
+      ssize_t n = ::read(fd, bytes.get() + got, size - got);
+      if (n < 0 && errno == EINTR) continue;
+      if (n <= 0) break;
+      got += static_cast<std::size_t>(n);
+    }
+    readable = got == size;
+  }
+  ::close(fd);
+  return readable ? checksum(std::string_view(bytes.get(), size)) : "";
 }
 
 }  // namespace
