@@ -1,8 +1,8 @@
 // The model cache's folders (plugins/ and pch/) hold finished builds, each
 // in a folder of its own named KEY.ID, and a symbolic link KEY naming the
 // newest build of each key. A build is made in a work folder tmp-KEY-ID,
-// ends with a manifest (the size, and for small files the content hash, of
-// each file it made), is renamed to KEY.ID and then published: the link is
+// ends with a manifest (the size, and for all but the 100 MB precompiled
+// header a checksum, of each file it made), is renamed to KEY.ID and then published: the link is
 // switched to it in one rename. So a reader sees a whole build or none;
 // what it finds is checked against the manifest before it is used; and a
 // killed build leaves only folders whose names say what they are, which the

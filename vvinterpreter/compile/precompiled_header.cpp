@@ -28,8 +28,8 @@ std::string precompiled_header_dir(const header_request& r, std::string& damage,
     std::string why;
     cache::verdict v = cache::verify(current.string(), why);
     if (v == cache::verdict::good) return current.string();
-    // Its size is checked, not its content: hashing 100 MB would cost a
-    // tenth of a second on every compile, and a header the compiler cannot
+    // Its size is checked, not its content: reading 100 MB would add tens
+    // of milliseconds to every compile, and a header the compiler cannot
     // read is rebuilt after the compile fails (unreadable_precompiled_header).
     if (v == cache::verdict::damaged) {
       damage = why;
