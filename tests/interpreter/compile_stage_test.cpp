@@ -161,6 +161,8 @@ TEST_F(ModelPath, EverySpellingOfOneFileIsBuiltUnderOneName) {
     EXPECT_EQ(vvi::model_path(typed).built(), built) << typed;
 }
 
+// The model's folder decides what it includes and reads: a link from
+// another folder makes that folder the model's, so it is a model of its own.
 TEST_F(ModelPath, ALinkInAnotherFolderIsAModelOfThatFolder) {
   EXPECT_EQ(vvi::model_path("other/t.vvp").built(), root_ + "/other/t.vvp");
 }

@@ -120,23 +120,6 @@ TEST(ModelCache, OneFileHasOneEntryHoweverItsPathIsTyped) {
   EXPECT_TRUE(contains(ran.out, "model ran: 42\n")) << report(ran);
 }
 
-// A link to the model from another folder makes that folder the model's
-// (its includes and files are looked up there): a model of its own.
-TEST(ModelCache, ALinkFromAnotherFolderIsAModelOfItsOwn) {
-  const std::string dir = fresh_dir("link_elsewhere");
-  fs::create_directories(dir + "m");
-  fs::create_directories(dir + "other");
-  write(dir + "m/t.vvp", "#include \"here.vvp\"\nstart { std::printf(\"%s\\n\", where); }\n");
-  write(dir + "m/here.vvp", "#include <cstdio>\nconst char* where = \"in m\";\n");
-  write(dir + "other/here.vvp", "#include <cstdio>\nconst char* where = \"in other\";\n");
-  fs::create_symlink("../m/t.vvp", dir + "other/t.vvp");
-  test_run::result in_m = run_in(dir, VV_TEST_CACHE, {"--batch", "m/t.vvp"});
-  test_run::result in_other = run_in(dir, VV_TEST_CACHE, {"--batch", "other/t.vvp"});
-  EXPECT_TRUE(contains(in_m.out, "\nin m\n")) << report(in_m);
-  EXPECT_TRUE(contains(in_other.out, "other/t.vvp: translated in")) << report(in_other);
-  EXPECT_TRUE(contains(in_other.out, "\nin other\n")) << report(in_other);
-}
-
 // A truncated plugin in the cache is found out before it is loaded: the
 // model is compiled again, with one line saying why, and runs.
 TEST(ModelCache, TruncatedPluginIsCompiledAgainWithANote) {
