@@ -15,6 +15,11 @@ void run(translation& t, const source_file& file, std::string source_dir) {
   std::vector<token> tokens = lex(file, t.sources, t.diag);
   program p = parser(tokens, t.diag).parse_program();
   if (t.diag.any()) return;
+  for (const property_block& b : p.properties) {
+    std::vector<std::string>& names =
+        b.keyword->text == "edge" ? t.fields.edge : b.keyword->text == "vertex" ? t.fields.vertex : t.fields.mesh;
+    for (const field& f : b.fields) names.emplace_back(f.name->text);
+  }
   t.cpp = emit(p, emit_options{version(), std::move(source_dir)});
   t.ok = true;
 }

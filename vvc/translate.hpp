@@ -2,6 +2,7 @@
 #pragma once
 
 #include <string>
+#include <vector>
 
 #include "diagnostics.hpp"
 #include "source.hpp"
@@ -13,6 +14,11 @@ struct translation {
   std::string cpp;          // the C++ (empty unless ok)
   source_set sources;       // the files the diagnostics point into
   diagnostics diag;
+  //! The fields each property block declares, in order (empty without the
+  //! block): the host names them when the compiler finds no such member.
+  struct declared_fields {
+    std::vector<std::string> edge, vertex, mesh;
+  } fields;
 };
 
 //! Translates a file. A file that cannot be read is an error of its own

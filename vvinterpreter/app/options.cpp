@@ -54,6 +54,8 @@ const char* usage_text =
     "  --compile-only     translate and compile, then exit\n"
     "  --cache DIR        compiled models (default $VV_CACHE_DIR or ~/.cache/vv)\n"
     "  --opt N            optimisation level for models (0-3, default 1)\n"
+    "  --rebuild          compile the model even when the cache holds it (batch,\n"
+    "                     --compile-only; the viewer has its Recompile button)\n"
     "  --debug            build the model with -g -O0 and run it in this process, for gdb\n"
     "  --in-process       batch: run the model in this process, unsupervised (a crash\n"
     "                     then ends the interpreter; for profilers and debuggers)\n"
@@ -123,6 +125,7 @@ void switches(CLI::App& app, options& o) {
   flag(app, "--end", o.end_block);
   flag(app, "--debug", o.debug);
   flag(app, "--in-process", o.in_process);
+  flag(app, "--rebuild", o.rebuild);
 }
 
 void numbers(CLI::App& app, options& o) {
@@ -203,6 +206,8 @@ void check_whole(const CLI::App& app, const std::vector<std::string>& models, op
   o.model = models[0];
   if (o.list_params) o.batch = true;  // headless, and supervised like a batch run
   if (o.batch && !o.script.empty()) throw usage_error{"--script drives the viewer; it cannot be used with --batch"};
+  if (o.rebuild && !o.batch && !o.compile_only)
+    throw usage_error{"--rebuild is for --batch and --compile-only (the viewer rebuilds with its Recompile button)"};
 }
 
 }  // namespace

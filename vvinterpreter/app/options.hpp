@@ -35,6 +35,7 @@ struct options {
   std::string frames = "frames";  // --frames DIR (proxy.record_frame)
   std::string cache;          // --cache DIR
   int optimization = 1;       // --opt N
+  bool rebuild = false;       // --rebuild: compile even when the cache holds the model (batch, --compile-only)
   bool quiet = false;         // --quiet: no progress, no summary
 };
 

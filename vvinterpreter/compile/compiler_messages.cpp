@@ -1,33 +1,54 @@
 #include "compile/compiler_messages.hpp"
 
 #include <cctype>
+#include <climits>
+#include <filesystem>
 #include <map>
-#include <regex>
+#include <optional>
 #include <set>
 #include <sstream>
 #include <utility>
 #include <vector>
 
 #include "app/files.hpp"
+#include "compile/property_messages.hpp"
+#include "source.hpp"
 
 namespace vvi {
 
 namespace {
 
-using place = std::pair<std::string, int>;  // file, line
+using place = std::pair<std::string, long long>;  // file, line
+
+// A line or column number as the compiler or a #line wrote it: nothing when
+// it is not all digits or does not fit below `limit` (a #line of 3000000000
+// is legal; g++ then prints it wrapped to a negative number).
+std::optional<long long> number(const std::string& digits, long long limit) {
+  if (digits.empty() || digits.size() > 18 || digits.find_first_not_of("0123456789") != std::string::npos)
+    return std::nullopt;
+  long long n = std::stoll(digits);
+  if (n > limit) return std::nullopt;
+  return n;
+}
 
 // The generated lines that stand for each .vvp line (from #line).
 std::map<place, std::vector<std::string>> generated_lines(const std::string& cpp) {
-  static const std::regex directive(R"re(^#line (\d+) "(.*)"$)re");
   std::map<place, std::vector<std::string>> out;
   std::istringstream in(cpp);
   std::string file, l;
-  int line = 0;
+  long long line = 0;
   while (std::getline(in, l)) {
-    std::smatch m;
-    if (std::regex_match(l, m, directive)) {
-      line = std::stoi(m[1]);
-      file = m[2];
+    // #line N "FILE"
+    if (l.rfind("#line ", 0) == 0) {
+      std::size_t space = l.find(' ', 6);
+      std::optional<long long> n = number(l.substr(6, space == std::string::npos ? space : space - 6), LLONG_MAX);
+      bool named = space != std::string::npos && l.size() >= space + 3 && l[space + 1] == '"' && l.back() == '"';
+      if (n && named) {
+        line = *n;
+        file = l.substr(space + 2, l.size() - space - 3);
+      } else {
+        file.clear();  // a directive this does not understand: its lines stand for nothing known
+      }
       continue;
     }
     if (!file.empty()) out[{file, line}].push_back(l);
@@ -81,14 +102,19 @@ int vvp_column(const std::string& vvp_line, const std::vector<std::string>& gene
   return found.size() == 1 ? static_cast<int>(*found.begin()) + 1 : 0;
 }
 
+// The .vvp lines messages quote, read once per file. Only a regular file of
+// a program's size is read: a #line may name anything.
 class vvp_files {
  public:
   const std::string& line(const std::string& file, int n) {
     auto it = lines_.find(file);
     if (it == lines_.end()) {
       std::vector<std::string> v;
-      std::istringstream in(read_file(file).value_or(""));
-      for (std::string l; std::getline(in, l);) v.push_back(l);
+      std::error_code ec;
+      if (std::filesystem::is_regular_file(file, ec) && std::filesystem::file_size(file, ec) <= vvc::max_source_bytes) {
+        std::istringstream in(read_file(file).value_or(""));
+        for (std::string l; std::getline(in, l);) v.push_back(l);
+      }
       it = lines_.emplace(file, std::move(v)).first;
     }
     static const std::string none;
@@ -106,36 +132,79 @@ bool ends_with(const std::string& s, const std::string& tail) {
 
 // "  12 | code" and "     |   ^~~~": the compiler's excerpt of a line.
 bool is_excerpt(const std::string& l) {
-  static const std::regex excerpt(R"(^ *\d* \|)");
-  return std::regex_search(l, excerpt);
+  std::size_t i = l.find_first_not_of(' ');
+  if (i == std::string::npos) return false;
+  if (l[i] == '|') return i > 0;  // no line number
+  i = l.find_first_not_of("0123456789", i);
+  return i != std::string::npos && l.compare(i, 2, " |") == 0;
+}
+
+// The file named by a line that starts a message ("f:12:5: error: ...",
+// "f: In function ...", "f: At global scope:"), or "". Its line and column
+// need not be numbers this can use ("f:-1294967296:3: ..." after a #line
+// beyond what g++ counts).
+std::string message_file(const std::string& l) {
+  if (l.empty() || l[0] == ' ' || l[0] == ':') return "";
+  std::size_t colon = l.find(':');
+  if (colon == std::string::npos || colon + 1 >= l.size()) return "";
+  char next = l[colon + 1];
+  bool numbered = std::isdigit(static_cast<unsigned char>(next)) || next == '-';
+  if (numbered || l.compare(colon, 5, ": In ") == 0 || l.compare(colon, 5, ": At ") == 0) return l.substr(0, colon);
+  return "";
+}
+
+// "f:12:5: message", with a line and a column that fit an int.
+struct location {
+  std::string file;
+  int line = 0, column = 0;
+  std::string message;
+};
+
+std::optional<location> located(const std::string& l, const std::string& file) {
+  std::size_t line_end = l.find(':', file.size() + 1);
+  if (line_end == std::string::npos) return std::nullopt;
+  std::size_t column_end = l.find(':', line_end + 1);
+  if (column_end == std::string::npos || l.compare(column_end, 2, ": ") != 0) return std::nullopt;
+  std::optional<long long> line = number(l.substr(file.size() + 1, line_end - file.size() - 1), INT_MAX);
+  std::optional<long long> column = number(l.substr(line_end + 1, column_end - line_end - 1), INT_MAX);
+  if (!line || !column || *line < 1) return std::nullopt;
+  return location{file, static_cast<int>(*line), static_cast<int>(*column), l.substr(column_end + 2)};
 }
 
 }  // namespace
 
-std::string compiler_messages(const std::string& output, const std::string& vvlib_dir,
-                              const std::string& generated_cpp) {
+std::string plain_quotes(std::string text) {
+  // g++ quotes with U+2018/U+2019 (and U+201C/U+201D) in a UTF-8 locale;
+  // the viewer's font has no glyph for them.
+  static const std::pair<const char*, char> typographic[] = {
+      {"\xE2\x80\x98", '\''}, {"\xE2\x80\x99", '\''}, {"\xE2\x80\x9C", '"'}, {"\xE2\x80\x9D", '"'}};
+  for (const auto& [from, to] : typographic)
+    for (std::size_t at = text.find(from); at != std::string::npos; at = text.find(from, at + 1))
+      text.replace(at, 3, 1, to);
+  return text;
+}
+
+std::string compiler_messages(const std::string& output, const message_sources& sources) {
   // A line that starts a message names its file first: "f:12:5: error: ..."
   // or "f: In function ...". The lines after it (source, caret, notes
   // without a place) belong to it.
-  static const std::regex located(R"(^([^ :][^:]*):(\d+):(\d+): (.*)$)");
-  std::map<place, std::vector<std::string>> generated = generated_lines(generated_cpp);
+  std::map<place, std::vector<std::string>> generated = generated_lines(sources.generated_cpp);
   vvp_files files;
-  std::istringstream in(output);
+  std::istringstream in(plain_quotes(output));
   std::string kept, line;
   bool keeping = false, about_vvp = false;
   while (std::getline(in, line)) {
-    std::smatch m;
-    bool starts = std::regex_match(line, m, located);
-    if (starts || (line.find(": In ") != std::string::npos && line[0] != ' ')) {
-      std::string path = line.substr(0, line.find(':'));
-      keeping = path.rfind(vvlib_dir, 0) != 0 && path.rfind("/usr/", 0) != 0;
+    std::string path = message_file(line);
+    if (!path.empty()) {
+      keeping = path.rfind(sources.vvlib_dir, 0) != 0 && path.rfind("/usr/", 0) != 0;
       about_vvp = ends_with(path, ".vvp");
-      if (keeping && starts && about_vvp) {
-        std::string file = m[1];
-        int n = std::stoi(m[2]);
-        const std::string& text = files.line(file, n);
-        int col = vvp_column(text, generated[{file, n}], std::stoi(m[3]));
-        kept += file + ":" + std::to_string(n) + (col ? ":" + std::to_string(col) : "") + ": " + std::string(m[4]) + "\n";
+      std::optional<location> at = keeping && about_vvp ? located(line, path) : std::nullopt;
+      if (at) {
+        const std::string& text = files.line(at->file, at->line);
+        int col = vvp_column(text, generated[{at->file, at->line}], at->column);
+        std::string message = property_message(at->message, sources.fields);
+        if (message.empty()) message = at->message;
+        kept += at->file + ":" + std::to_string(at->line) + (col ? ":" + std::to_string(col) : "") + ": " + message + "\n";
         kept += "  " + text + "\n";
         if (col) {
           std::string pad = "  ";

@@ -2,18 +2,18 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
-#include <cerrno>
-#include <csignal>
-#include <cstdlib>
 #include <sstream>
-#include <unistd.h>
 
-#include "compile/build_config.hpp"
 #include "app/files.hpp"
-#include "compile/hashing.hpp"
+#include "compile/build_config.hpp"
 #include "compile/compiler_messages.hpp"
+#include "compile/hashing.hpp"
+#include "compile/model_cache.hpp"
+#include "compile/model_path.hpp"
+#include "compile/precompiled_header.hpp"
 #include "compile/process.hpp"
 #include "translate.hpp"
 
@@ -75,30 +75,6 @@ std::string join(const std::vector<std::string>& argv) {
   return s;
 }
 
-// Builds the precompiled vv/plugin/model.hpp for these flags, once per cache.
-std::string precompiled_header_dir(const build_settings& s, const std::string& include,
-                                   const std::string& stamp, std::string& error) {
-  std::vector<std::string> flags = common_flags(s, include);
-  std::string key = content_hash().add(config::cxx_compiler).add(join(flags)).add(stamp).hex();
-  std::string dir = s.cache_dir + "/pch/" + key;
-  std::string gch = dir + "/vv/plugin/model.hpp.gch";
-  if (fs::exists(gch)) return dir;
-  std::error_code ec;
-  fs::create_directories(dir + "/vv/plugin", ec);
-  std::string tmp = gch + ".tmp" + std::to_string(getpid());
-  std::vector<std::string> argv = {config::cxx_compiler};
-  argv.insert(argv.end(), flags.begin(), flags.end());
-  argv.insert(argv.end(), {"-x", "c++-header", include + "/vv/plugin/model.hpp", "-o", tmp});
-  process_result r = run_process(argv);
-  if (r.status != 0) {
-    fs::remove(tmp, ec);
-    error = "cannot precompile vv/plugin/model.hpp:\n" + r.output;
-    return "";
-  }
-  fs::rename(tmp, gch, ec);  // another process may have won the race: either copy is good
-  return dir;
-}
-
 // The files a plugin was built from, other than vvlib's and the system's,
 // with their content hashes (to tell whether a cached build is still good).
 std::string dependency_list(const std::string& depfile, const std::string& include) {
@@ -158,48 +134,53 @@ std::vector<std::string> dependency_paths(const std::string& list) {
   return out;
 }
 
-std::string unique_build_id() {
-  auto ns = std::chrono::steady_clock::now().time_since_epoch().count();
-  return std::to_string(getpid()) + "-" + std::to_string(ns);
-}
-
-bool process_alive(const std::string& pid_text) {
-  long pid = std::strtol(pid_text.c_str(), nullptr, 10);
-  return pid > 0 && (kill(static_cast<pid_t>(pid), 0) == 0 || errno != ESRCH);
-}
-
-// Work folders of compiles that were killed ("tmp-KEY-PID").
-void remove_stale_work(const std::string& plugins) {
-  std::error_code ec;
-  for (auto it = fs::directory_iterator(plugins, ec); !ec && it != fs::directory_iterator(); it.increment(ec)) {
-    std::string name = it->path().filename().string();
-    if (name.rfind("tmp-", 0) != 0) continue;
-    std::string pid = name.substr(name.rfind('-') + 1);
-    std::error_code rm;
-    if (!process_alive(pid)) fs::remove_all(it->path(), rm);
-  }
-}
-
-// Makes `link` (the cache key) name the build in `target` (a sibling
-// folder), replacing what it named before in one rename: a reader sees the
-// old build or the new one, never neither. Older builds of the key go.
-void publish(const std::string& plugins, const std::string& key, const std::string& target) {
-  std::error_code ec;
-  std::string link = plugins + "/" + key;
-  std::string tmp_link = plugins + "/link-" + unique_build_id();
-  fs::create_directory_symlink(target, tmp_link, ec);
-  if (fs::is_directory(fs::symlink_status(link, ec))) fs::remove_all(link, ec);  // an older cache's layout
-  fs::rename(tmp_link, link, ec);
-  for (auto it = fs::directory_iterator(plugins, ec); !ec && it != fs::directory_iterator(); it.increment(ec)) {
-    std::string name = it->path().filename().string();
-    std::error_code rm;
-    if (name.rfind(key + ".", 0) == 0 && name != target) fs::remove_all(it->path(), rm);
-  }
-}
-
 }  // namespace
 
-build_result build_model(const std::string& path, const build_settings& s) {
+
+namespace {
+
+// What a finished build holds, as its manifest lists it. The plugin is
+// small enough to hash on every use (a few hundred KB: well under a
+// millisecond).
+const std::vector<cache::listed_file> build_files = {{"model.so", cache::check::content},
+                                                     {"model.cpp", cache::check::content},
+                                                     {"deps", cache::check::content},
+                                                     {"warnings", cache::check::content}};
+
+build_result failed(const std::string& path, const std::string& why) {
+  build_result r;
+  r.error = path + ": error: " + why;
+  r.details = r.error + "\n";
+  return r;
+}
+
+// The translator's messages, under the path as typed: the file is
+// translated again under that name (only when translation failed).
+build_result translation_failed(const std::string& path) {
+  std::string unreadable;
+  vvc::translation t = vvc::translate_file(path, &unreadable);
+  if (!unreadable.empty()) return failed(path, "cannot read the model: " + unreadable);
+  build_result r;
+  r.sources = t.sources.paths();
+  for (const auto& d : t.diag.list()) r.details += vvc::format(d);
+  r.error = r.details.substr(0, r.details.find('\n'));
+  if (r.error.empty()) r.error = path + ": error: the model cannot be translated";
+  return r;
+}
+
+// The one line that says what stopped a compile: the first message that is
+// an error ("f:12:3: error: ..."); failing that, any line that says error
+// (a linker's).
+std::string first_error(const std::string& details) {
+  for (const char* mark : {": error:", "error"}) {
+    std::istringstream lines(details);
+    for (std::string line; std::getline(lines, line);)
+      if (line.find(mark) != std::string::npos) return line;
+  }
+  return "";
+}
+
+build_result build_unguarded(const std::string& path, const build_settings& s) {
   build_result r;
   if (is_plugin_file(path)) {  // a prebuilt plugin
     r.ok = true;
@@ -208,26 +189,18 @@ build_result build_model(const std::string& path, const build_settings& s) {
     return r;
   }
 
+  model_path where(path);
   auto t0 = std::chrono::steady_clock::now();
   std::string unreadable;
-  vvc::translation t = vvc::translate_file(path, &unreadable);
+  vvc::translation t = vvc::translate_file(where.built(), &unreadable);
   r.translate_ms = ms_since(t0);
-  r.sources = t.sources.paths();
-  if (!t.ok) {
-    if (!unreadable.empty()) {
-      r.error = path + ": error: cannot read the model: " + unreadable;
-      r.details = r.error + "\n";
-      return r;
-    }
-    for (const auto& d : t.diag.list()) r.details += vvc::format(d);
-    r.error = r.details.substr(0, r.details.find('\n'));
-    return r;
-  }
+  if (!t.ok) return translation_failed(path);
+  for (const std::string& source : t.sources.paths()) r.sources.push_back(where.shown(source));
 
   std::string include = vvlib_include_dir();
   std::string stamp = headers_stamp(include);
   std::vector<std::string> flags = common_flags(s, include);
-  std::string model_dir = absolute_folder_of(path);
+  std::string model_dir = absolute_folder_of(where.built());
   std::string key = content_hash()
                         .add(vvc::version())
                         .add(config::cxx_compiler)
@@ -237,79 +210,110 @@ build_result build_model(const std::string& path, const build_settings& s) {
                         .add(t.cpp)
                         .hex();
   std::string plugins = s.cache_dir + "/plugins";
+  std::string notes;  // what was found broken in the cache and rebuilt, a line each
   std::error_code ec;
-  // The build the key names now, resolved once: a rebuild may replace it.
-  fs::path entry = fs::canonical(plugins + "/" + key, ec);
-  if (!s.force && !ec && fs::exists(entry / "model.so")) {
-    std::string deps = read_file((entry / "deps").string()).value_or("");
-    if (dependencies_unchanged(deps)) {
-      r.ok = true;
-      r.cached = true;
-      r.plugin = (entry / "model.so").string();
-      r.cpp = (entry / "model.cpp").string();
-      r.warnings = read_file((entry / "warnings").string()).value_or("");
-      for (const std::string& h : dependency_paths(deps)) r.sources.push_back(h);
-      return r;
+  if (!s.force) {
+    // The build the key names now, resolved once: a rebuild may replace it.
+    fs::path entry = fs::canonical(plugins + "/" + key, ec);
+    std::string why;
+    cache::verdict found = ec ? cache::verdict::unlisted : cache::verify(entry.string(), why);
+    if (found == cache::verdict::good) {
+      std::string deps = read_file((entry / "deps").string()).value_or("");
+      if (dependencies_unchanged(deps)) {
+        r.ok = true;
+        r.cached = true;
+        r.plugin = (entry / "model.so").string();
+        r.cpp = (entry / "model.cpp").string();
+        r.warnings = where.shown_in(read_file((entry / "warnings").string()).value_or(""));
+        for (const std::string& h : dependency_paths(deps)) r.sources.push_back(h);
+        return r;
+      }
+    } else if (found == cache::verdict::damaged) {
+      notes += path + ": note: the cached build was damaged (" + why + "); compiling it again\n";
+      fs::remove_all(entry, ec);
     }
   }
 
   if (s.compiling) s.compiling();
   auto t1 = std::chrono::steady_clock::now();
-  std::string pch_error;
-  std::string pch = precompiled_header_dir(s, include, stamp, pch_error);
+  header_request header{s.cache_dir, include, flags,
+                        content_hash().add(config::cxx_compiler).add(join(flags)).add(stamp).hex()};
+  std::string damage, header_error;
+  std::string pch = precompiled_header_dir(header, damage, header_error);
+  if (!damage.empty())
+    notes += path + ": note: the cached precompiled vvlib header was damaged (" + damage + "); it was built again\n";
   fs::create_directories(plugins, ec);
-  remove_stale_work(plugins);
-  std::string work = plugins + "/tmp-" + key + "-" + std::to_string(getpid());
-  fs::remove_all(work, ec);
+  cache::remove_leftovers(plugins);
+  std::string work = plugins + "/tmp-" + key + "-" + cache::unique_id();
   fs::create_directories(work, ec);
   if (ec || !write_file(work + "/model.cpp", t.cpp)) {
-    r.error = plugins + ": error: cannot write to the model cache";
-    return r;
+    fs::remove_all(work, ec);
+    return failed(plugins, "cannot write to the model cache");
   }
-  std::vector<std::string> argv = {config::cxx_compiler};
-  argv.insert(argv.end(), flags.begin(), flags.end());
-  if (!pch.empty()) argv.insert(argv.begin() + 1, {"-I", pch});
   // The polygon formats come compiled, from vv_formats (M.readFile("x.obj")).
   std::string lib = vvlib_library_dir();
-  argv.insert(argv.end(), {"-Wall", "-Wextra", "-I", model_dir, "-shared", "-MD", "-MF", work + "/model.d",
-                           "-o", work + "/model.so", work + "/model.cpp", "-L", lib, "-Wl,-rpath," + lib,
-                           "-lvv_formats", "-lpugixml", "-lGL"});
+  auto command = [&](const std::string& header_dir) {
+    std::vector<std::string> argv = {config::cxx_compiler};
+    if (!header_dir.empty()) argv.insert(argv.end(), {"-I", header_dir});
+    argv.insert(argv.end(), flags.begin(), flags.end());
+    argv.insert(argv.end(), {"-Wall", "-Wextra", "-I", model_dir, "-shared", "-MD", "-MF", work + "/model.d",
+                             "-o", work + "/model.so", work + "/model.cpp", "-L", lib, "-Wl,-rpath," + lib,
+                             "-lvv_formats", "-lpugixml", "-lGL"});
+    return argv;
+  };
+  std::vector<std::string> argv = command(pch);
   process_result c = run_process(argv);
+  if (c.status != 0 && !pch.empty() && unreadable_precompiled_header(c.output)) {
+    // Damaged in a way its size does not show: build it again, once.
+    notes += path + ": note: the compiler could not read the cached precompiled vvlib header; it was built again\n";
+    discard_precompiled_header(pch);
+    argv = command(precompiled_header_dir(header, damage, header_error));
+    c = run_process(argv);
+  }
   r.compile_ms = ms_since(t1);
-  std::string about_model = compiler_messages(c.output, include, t.cpp);
+  message_sources sources{include, t.cpp, {t.fields.edge, t.fields.vertex, t.fields.mesh}};
+  std::string about_model = compiler_messages(c.output, sources);  // in the built spelling: cached so
   if (c.status != 0) {
-    r.details = about_model.empty() ? c.output : about_model;
-    // The first message that is an error ("f:12:3: error: ..."); failing
-    // that, any line that says error (a linker's).
-    for (const char* mark : {": error:", "error"}) {
-      std::istringstream lines(r.details);
-      for (std::string line; r.error.empty() && std::getline(lines, line);)
-        if (line.find(mark) != std::string::npos) r.error = line;
-    }
+    r.details = where.shown_in(about_model.empty() ? plain_quotes(c.output) : about_model);
+    r.error = first_error(r.details);
     if (r.error.empty()) r.error = path + ": error: the C++ compiler failed (" + config::cxx_compiler + ")";
+    r.details = notes + r.details;
     fs::remove_all(work, ec);
     return r;
   }
   std::string deps = dependency_list(work + "/model.d", include);
-  write_file(work + "/deps", deps);
-  write_file(work + "/command", join(argv) + "\n");  // how it was built, for whoever looks
-  write_file(work + "/warnings", about_model);
+  bool stored = write_file(work + "/deps", deps) && write_file(work + "/warnings", about_model) &&
+                write_file(work + "/command", join(argv) + "\n") &&  // how it was built, for whoever looks
+                cache::write_manifest(work, build_files);            // last: the build is whole
   // Every build gets a folder of its own, so what a process loaded is never
   // overwritten; the key then names the newest.
-  std::string target = key + "." + unique_build_id();
-  fs::rename(work, plugins + "/" + target, ec);
-  if (ec) {
+  std::string build = key + "." + cache::unique_id();
+  if (stored) fs::rename(work, plugins + "/" + build, ec);
+  if (!stored || ec) {
     fs::remove_all(work, ec);
-    r.error = plugins + ": error: cannot store the compiled model in the cache";
-    return r;
+    return failed(plugins, "cannot store the compiled model in the cache");
   }
-  publish(plugins, key, target);
+  cache::publish(plugins, key, build);
   r.ok = true;
-  r.plugin = plugins + "/" + target + "/model.so";
-  r.cpp = plugins + "/" + target + "/model.cpp";
-  r.warnings = about_model;
+  r.plugin = plugins + "/" + build + "/model.so";
+  r.cpp = plugins + "/" + build + "/model.cpp";
+  r.warnings = notes + where.shown_in(about_model);
   for (const std::string& h : dependency_paths(deps)) r.sources.push_back(h);
   return r;
+}
+
+}  // namespace
+
+build_result build_model(const std::string& path, const build_settings& s) {
+  // Whatever goes wrong in building comes back as a message: the viewer and
+  // batch report it and stay up.
+  try {
+    return build_unguarded(path, s);
+  } catch (const std::exception& e) {
+    return failed(path, std::string("the model could not be built: ") + e.what());
+  } catch (...) {
+    return failed(path, "the model could not be built (an unknown exception)");
+  }
 }
 
 }  // namespace vvi

@@ -10,7 +10,7 @@ build_settings build_settings_for(const options& o, bool force) {
   s.cache_dir = o.cache.empty() ? default_cache_dir() : o.cache;
   s.optimization = o.optimization;
   s.debug = o.debug;
-  s.force = force;
+  s.force = force || o.rebuild;  // --rebuild: batch and --compile-only build once
   return s;
 }
 

@@ -1,0 +1,249 @@
+// The model cache as users meet it (docs/interpreter.md, "Building and
+// caching models"): one entry per file however its path is typed; damaged
+// plugins and precompiled headers rebuilt with a note; --rebuild; the
+// leftovers of killed builds removed; builds of one model at once, even
+// from separate PID namespaces, all succeed.
+//
+// Models are tiny and each test compiles as few as it needs (a compile is
+// about two seconds). Most use the suite's shared cache; their models live
+// in this process's scratch folder, so each run compiles them afresh.
+#include <gtest/gtest.h>
+
+#include <sys/time.h>
+
+#include <ctime>
+#include <filesystem>
+#include <fstream>
+#include <future>
+#include <string>
+#include <vector>
+
+#include "run_interpreter.hpp"
+#include "test_files.hpp"
+
+using test_files::scratch_dir;
+
+namespace fs = std::filesystem;
+
+namespace {
+
+std::string fresh_dir(const std::string& name) {
+  std::string d = scratch_dir() + name;
+  fs::remove_all(d);
+  fs::create_directories(d);
+  return fs::canonical(d).string() + "/";
+}
+
+void write(const std::string& path, const std::string& text) {
+  std::ofstream out(path, std::ios::binary);
+  out << text;
+  ASSERT_TRUE(out.good()) << path;
+}
+
+bool contains(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
+
+std::string report(const test_run::result& r) {
+  return "status " + std::to_string(r.status) + "\n--- stdout:\n" + r.out + "--- stderr:\n" + r.err;
+}
+
+//! vvinterpreter with `cache` and these arguments, in the folder `cwd`.
+test_run::result run_in(const std::string& cwd, const std::string& cache, const std::vector<std::string>& args) {
+  std::vector<std::string> argv = {"env", "-C", cwd, VV_INTERPRETER, "--cache", cache};
+  argv.insert(argv.end(), args.begin(), args.end());
+  return test_run::run(argv, 280);
+}
+
+test_run::result run(const std::vector<std::string>& args) { return run_in(".", VV_TEST_CACHE, args); }
+
+//! The plugin path --compile-only prints (its last line of output).
+std::string plugin_of(const test_run::result& r) {
+  std::string s = r.out;
+  while (!s.empty() && s.back() == '\n') s.pop_back();
+  std::size_t nl = s.rfind('\n');
+  return nl == std::string::npos ? s : s.substr(nl + 1);
+}
+
+// A model that says it ran, with a warning (so that the cached warnings
+// are shown too). `tag` makes its text, and so its cache key, its own.
+std::string tiny_model(const std::string& tag) {
+  return "#include <cstdio>\n"
+         "// " + tag + "\n"
+         "start { int unused_x = 1; std::printf(\"model ran: %d\\n\", 6 * 7); }\n";
+}
+
+const std::string found_in_cache = ": compiled model found in the cache\n";
+
+// The warning of tiny_model, under the name `typed`.
+std::string tiny_warning(const std::string& typed) {
+  return typed + ": In function 'void vv_block_start()':\n" + typed +
+         ":3:13: warning: unused variable 'unused_x' [-Wunused-variable]\n"
+         "  start { int unused_x = 1; std::printf(\"model ran: %d\\n\", 6 * 7); }\n"
+         "              ^\n";
+}
+
+// examples/x.vvp, ./x.vvp, an absolute path, a path through `..`, through a
+// linked folder, and a link to the file beside it: one file, one entry.
+// Each later spelling finds the first one's build, and its warning names
+// the file as that spelling types it.
+TEST(ModelCache, OneFileHasOneEntryHoweverItsPathIsTyped) {
+  const std::string dir = fresh_dir("spellings");
+  fs::create_directories(dir + "m/sub");
+  write(dir + "m/t.vvp", tiny_model("spellings"));
+  fs::create_directory_symlink("m", dir + "mlink");
+  fs::create_symlink("t.vvp", dir + "m/link.vvp");
+
+  test_run::result first = run_in(dir, VV_TEST_CACHE, {"--compile-only", "m/t.vvp"});
+  ASSERT_EQ(first.status, 0) << report(first);
+  ASSERT_TRUE(contains(first.out, "m/t.vvp: translated in")) << report(first);
+  EXPECT_EQ(first.err, tiny_warning("m/t.vvp"));
+  const std::string plugin = plugin_of(first);
+
+  struct spelling {
+    std::string cwd, typed;
+  };
+  for (const spelling& s : std::vector<spelling>{{dir, "./m/t.vvp"},
+                                                 {dir, dir + "m/t.vvp"},
+                                                 {dir + "m/sub", "../t.vvp"},
+                                                 {dir + "m", "t.vvp"},
+                                                 {dir, "mlink/t.vvp"},
+                                                 {dir, "m/sub/../../mlink/./t.vvp"},
+                                                 {dir, "m/link.vvp"}}) {
+    SCOPED_TRACE(s.typed + " in " + s.cwd);
+    test_run::result again = run_in(s.cwd, VV_TEST_CACHE, {"--compile-only", s.typed});
+    EXPECT_EQ(again.status, 0) << report(again);
+    EXPECT_EQ(again.out, s.typed + found_in_cache + plugin + "\n");
+    EXPECT_EQ(again.err, tiny_warning(s.typed));
+  }
+  test_run::result ran = run_in(dir + "m", VV_TEST_CACHE, {"--batch", "../mlink/t.vvp"});
+  EXPECT_EQ(ran.status, 0) << report(ran);
+  EXPECT_TRUE(contains(ran.out, "../mlink/t.vvp" + found_in_cache)) << report(ran);
+  EXPECT_TRUE(contains(ran.out, "model ran: 42\n")) << report(ran);
+}
+
+// A truncated plugin in the cache is found out before it is loaded: the
+// model is compiled again, with one line saying why, and runs.
+TEST(ModelCache, TruncatedPluginIsCompiledAgainWithANote) {
+  const std::string dir = fresh_dir("truncated_plugin");
+  const std::string model = dir + "t.vvp";
+  write(model, tiny_model("truncated plugin"));
+  test_run::result built = run({"--compile-only", model});
+  ASSERT_EQ(built.status, 0) << report(built);
+  const std::string plugin = plugin_of(built);
+  const std::uintmax_t size = fs::file_size(plugin);
+  fs::resize_file(plugin, 4096);
+
+  test_run::result ran = run({"--batch", model});
+  EXPECT_EQ(ran.status, 0) << report(ran);
+  EXPECT_EQ(ran.err, model + ": note: the cached build was damaged (model.so has 4096 bytes, " +
+                         std::to_string(size) + " expected); compiling it again\n" + tiny_warning(model));
+  EXPECT_TRUE(contains(ran.out, model + ": translated in")) << report(ran);
+  EXPECT_TRUE(contains(ran.out, "model ran: 42\n")) << report(ran);
+
+  test_run::result again = run({"--batch", model});
+  EXPECT_EQ(again.status, 0) << report(again);
+  EXPECT_TRUE(contains(again.out, model + found_in_cache)) << report(again);
+  EXPECT_EQ(again.err, tiny_warning(model));
+}
+
+// A truncated precompiled header is built again (in a cache of this test's
+// own: the suite's is in use by other tests), with one line saying why.
+TEST(ModelCache, TruncatedPrecompiledHeaderIsBuiltAgainWithANote) {
+  const std::string dir = fresh_dir("truncated_header");
+  write(dir + "seed.vvp", "start {}\n");
+  test_run::result seeded = run({"--compile-only", dir + "seed.vvp"});  // the suite's header exists
+  ASSERT_EQ(seeded.status, 0) << report(seeded);
+  const std::string cache = dir + "cache";
+  fs::create_directories(cache);
+  fs::copy(std::string(VV_TEST_CACHE) + "/pch", cache + "/pch", fs::copy_options::recursive | fs::copy_options::copy_symlinks);
+  int truncated = 0;
+  for (const auto& e : fs::recursive_directory_iterator(cache + "/pch"))
+    if (e.is_regular_file() && e.path().filename() == "model.hpp.gch") fs::resize_file(e.path(), 1000000), ++truncated;
+  ASSERT_GT(truncated, 0);
+
+  const std::string model = dir + "t.vvp";
+  write(model, tiny_model("truncated header"));
+  test_run::result built = run_in(dir, cache, {"--batch", model});
+  EXPECT_EQ(built.status, 0) << report(built);
+  const std::string note = model + ": note: the cached precompiled vvlib header was damaged "
+                                   "(vv/plugin/model.hpp.gch has 1000000 bytes, ";
+  EXPECT_EQ(built.err.rfind(note, 0), 0u) << report(built);
+  EXPECT_TRUE(contains(built.err, " expected); it was built again\n" + tiny_warning(model))) << report(built);
+  EXPECT_TRUE(contains(built.out, "model ran: 42\n")) << report(built);
+}
+
+void age(const std::string& path, long seconds) {
+  struct timeval times[2];
+  times[0].tv_sec = times[1].tv_sec = std::time(nullptr) - seconds;
+  times[0].tv_usec = times[1].tv_usec = 0;
+  ASSERT_EQ(lutimes(path.c_str(), times), 0) << path;
+}
+
+// --rebuild compiles a model the cache holds; that build, like any, removes
+// what killed builds left in the cache once it is an hour old, and leaves
+// a build that may still be running elsewhere.
+TEST(ModelCache, RebuildCompilesAgainAndRemovesOldLeftoversOfKilledBuilds) {
+  const std::string dir = fresh_dir("rebuild");
+  const std::string model = dir + "t.vvp";
+  write(model, tiny_model("rebuild"));
+  test_run::result built = run({"--compile-only", model});
+  ASSERT_EQ(built.status, 0) << report(built);
+
+  const std::string cache = VV_TEST_CACHE;
+  const std::string tag = "0123456789abcdef0123456789abcdef-" + std::to_string(getpid());
+  const std::string dead_header = cache + "/pch/tmp-" + tag + "-dead";
+  const std::string dead_plugin = cache + "/plugins/tmp-" + tag + "-dead";
+  const std::string running = cache + "/plugins/tmp-" + tag + "-running";
+  for (const std::string& d : {dead_header + "/vv/plugin", dead_plugin, running}) fs::create_directories(d);
+  write(dead_header + "/vv/plugin/model.hpp.gch", std::string(1 << 20, 'x'));
+  write(dead_plugin + "/model.so", std::string(1 << 16, 'x'));
+  age(dead_header, 2 * 3600);
+  age(dead_plugin, 2 * 3600);
+
+  test_run::result again = run({"--compile-only", "--rebuild", model});
+  EXPECT_EQ(again.status, 0) << report(again);
+  EXPECT_TRUE(contains(again.out, model + ": translated in")) << report(again);
+  EXPECT_NE(plugin_of(again), plugin_of(built));
+  EXPECT_TRUE(fs::is_regular_file(plugin_of(again))) << report(again);
+  EXPECT_FALSE(fs::exists(dead_header));
+  EXPECT_FALSE(fs::exists(dead_plugin));
+  EXPECT_TRUE(fs::exists(running));
+  fs::remove_all(running);
+}
+
+TEST(ModelCache, RebuildIsRefusedByTheViewer) {
+  test_run::result r = run({"--rebuild", "model.vvp"});
+  EXPECT_EQ(r.status, 2);
+  EXPECT_EQ(r.err.substr(0, r.err.find('\n')),
+            "vvinterpreter: --rebuild is for --batch and --compile-only (the viewer rebuilds with its Recompile "
+            "button)");
+}
+
+// Two builds of one model at once into one cache both succeed, and each
+// plugin stays for its process to load. Where the machine allows, each runs
+// as process 1 of a PID namespace of its own, as in two containers sharing
+// a cache: temporaries named by process id would be the same file.
+TEST(ModelCache, TwoBuildsOfOneModelAtOnceBothSucceed) {
+  const std::string dir = fresh_dir("at_once");
+  const std::string model = dir + "t.vvp";
+  write(model, tiny_model("at once"));
+  std::vector<std::string> prefix;
+  if (test_run::run({"unshare", "--pid", "--fork", "true"}, 30).status == 0) prefix = {"unshare", "--pid", "--fork"};
+  else std::fprintf(stderr, "note: no PID namespaces here; the two builds share one\n");
+  std::vector<std::string> argv = prefix;
+  for (const std::string& a : {std::string(VV_INTERPRETER), std::string("--cache"), std::string(VV_TEST_CACHE),
+                               std::string("--compile-only"), model})
+    argv.push_back(a);
+  auto one = std::async(std::launch::async, [&] { return test_run::run(argv, 280); });
+  auto two = std::async(std::launch::async, [&] { return test_run::run(argv, 280); });
+  test_run::result a = one.get(), b = two.get();
+  EXPECT_EQ(a.status, 0) << report(a);
+  EXPECT_EQ(b.status, 0) << report(b);
+  EXPECT_TRUE(fs::is_regular_file(plugin_of(a))) << report(a);
+  EXPECT_TRUE(fs::is_regular_file(plugin_of(b))) << report(b);
+  test_run::result ran = run({"--batch", model});
+  EXPECT_EQ(ran.status, 0) << report(ran);
+  EXPECT_TRUE(contains(ran.out, model + found_in_cache)) << report(ran);
+  EXPECT_TRUE(contains(ran.out, "model ran: 42\n")) << report(ran);
+}
+
+}  // namespace

@@ -1,0 +1,71 @@
+#include "compile/precompiled_header.hpp"
+
+#include <filesystem>
+
+#include "compile/build_config.hpp"
+#include "compile/model_cache.hpp"
+#include "compile/process.hpp"
+
+namespace vvi {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+const char* const header_file = "vv/plugin/model.hpp.gch";
+
+}  // namespace
+
+std::string precompiled_header_dir(const header_request& r, std::string& damage, std::string& error) {
+  std::string folder = r.cache_dir + "/pch";
+  std::error_code ec;
+  fs::create_directories(folder, ec);
+  cache::remove_leftovers(folder);
+  // The build the key names now, resolved once: another process may publish
+  // a new one meanwhile.
+  fs::path current = fs::canonical(folder + "/" + r.key, ec);
+  if (!ec) {
+    std::string why;
+    cache::verdict v = cache::verify(current.string(), why);
+    if (v == cache::verdict::good) return current.string();
+    // Its size is checked, not its content: reading 100 MB would add tens
+    // of milliseconds to every compile, and a header the compiler cannot
+    // read is rebuilt after the compile fails (unreadable_precompiled_header).
+    if (v == cache::verdict::damaged) {
+      damage = why;
+      discard_precompiled_header(current.string());
+    }
+  }
+
+  std::string work = folder + "/tmp-" + r.key + "-" + cache::unique_id();
+  fs::create_directories(work + "/vv/plugin", ec);
+  std::vector<std::string> argv = {config::cxx_compiler};
+  argv.insert(argv.end(), r.flags.begin(), r.flags.end());
+  argv.insert(argv.end(), {"-x", "c++-header", r.include + "/vv/plugin/model.hpp", "-o", work + "/" + header_file});
+  process_result made = run_process(argv);
+  if (made.status != 0 || !cache::write_manifest(work, {{header_file, cache::check::size}})) {
+    fs::remove_all(work, ec);
+    error = "cannot precompile vv/plugin/model.hpp:\n" + made.output;
+    return "";
+  }
+  std::string build = r.key + "." + cache::unique_id();
+  fs::rename(work, folder + "/" + build, ec);
+  if (ec) {
+    fs::remove_all(work, ec);
+    error = folder + ": cannot store the precompiled header in the cache";
+    return "";
+  }
+  cache::publish(folder, r.key, build);
+  return folder + "/" + build;
+}
+
+void discard_precompiled_header(const std::string& dir) {
+  std::error_code ec;
+  fs::remove_all(dir, ec);
+}
+
+bool unreadable_precompiled_header(const std::string& compiler_output) {
+  return compiler_output.find("cannot read PCH file") != std::string::npos;
+}
+
+}  // namespace vvi
