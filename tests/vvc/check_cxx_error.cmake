@@ -1,24 +1,32 @@
-# Translates INPUT (valid vv with a C++ type error on the line marked
-# `// C++ error here`) and compiles it: the compiler must name that .vvp line.
+# Translates INPUT (valid vv with C++ errors on the lines marked
+# `// C++ error here`) and compiles it: the compiler must refuse it and name
+# every marked .vvp line (it reports each error, so one compile checks them
+# all).
 execute_process(COMMAND ${VVC} ${INPUT} -o ${OUTPUT} RESULT_VARIABLE status ERROR_VARIABLE err)
 if(NOT status EQUAL 0)
   message(FATAL_ERROR "vvc failed:\n${err}")
 endif()
 file(STRINGS ${INPUT} lines)
 set(n 0)
-set(line 0)
+set(marked "")
 foreach(l IN LISTS lines)
   math(EXPR n "${n} + 1")
-  if(l MATCHES "// C\\+\\+ error here")
-    set(line ${n})
+  if(l MATCHES "// C\\+\\+ error here$")
+    list(APPEND marked ${n})
   endif()
 endforeach()
-execute_process(COMMAND ${CXX} -std=c++17 -fsyntax-only -I${INCLUDE} ${OUTPUT}
+if(NOT marked)
+  message(FATAL_ERROR "${INPUT} has no line marked '// C++ error here'")
+endif()
+get_filename_component(name ${INPUT} NAME)
+execute_process(COMMAND ${CXX} -std=c++17 -fsyntax-only -fmax-errors=0 -I${INCLUDE} ${OUTPUT}
                 RESULT_VARIABLE status ERROR_VARIABLE err)
 if(status EQUAL 0)
-  message(FATAL_ERROR "the program compiled, but it has a C++ error")
+  message(FATAL_ERROR "the program compiled, but it has C++ errors at ${name} lines ${marked}")
 endif()
-if(NOT err MATCHES "cxx_error.vvp:${line}:[0-9]+: error")
-  message(FATAL_ERROR "the compiler did not report the error at cxx_error.vvp:${line}:\n${err}")
-endif()
-message(STATUS "ok: the compiler reported cxx_error.vvp:${line}")
+foreach(line IN LISTS marked)
+  if(NOT err MATCHES "${name}:${line}:[0-9]+: error")
+    message(FATAL_ERROR "the compiler did not report an error at ${name}:${line}:\n${err}")
+  endif()
+endforeach()
+message(STATUS "ok: the compiler reported ${name} lines ${marked}")
