@@ -1,24 +1,45 @@
 # Translates INPUT (valid vv with C++ errors on the lines marked
 # `// C++ error here`) and compiles it: the compiler must refuse it and name
 # every marked .vvp line (it reports each error, so one compile checks them
-# all).
-execute_process(COMMAND ${VVC} ${INPUT} -o ${OUTPUT} RESULT_VARIABLE status ERROR_VARIABLE err)
-if(NOT status EQUAL 0)
-  message(FATAL_ERROR "vvc failed:\n${err}")
-endif()
-file(STRINGS ${INPUT} lines)
-set(n 0)
+# all). With LINE_ENDS=CR or CRLF, a copy of INPUT with those line ends
+# (beside OUTPUT) is translated instead: the lines must be the same.
+# The marked lines, counted by hand: file(STRINGS) would join the lines a
+# backslash continues, and a CMake list would split at ';' and '['.
+file(READ ${INPUT} text)
 set(marked "")
-foreach(l IN LISTS lines)
-  math(EXPR n "${n} + 1")
-  if(l MATCHES "// C\\+\\+ error here$")
-    list(APPEND marked ${n})
+set(rest "${text}")
+set(line 1)
+set(at 0)
+while(NOT at EQUAL -1)
+  string(FIND "${rest}" "// C++ error here\n" at)
+  if(NOT at EQUAL -1)
+    string(SUBSTRING "${rest}" 0 ${at} before)
+    string(REGEX MATCHALL "\n" newlines "${before}")
+    list(LENGTH newlines n)
+    math(EXPR line "${line} + ${n}")
+    list(APPEND marked ${line})
+    math(EXPR at "${at} + 18")  # past the marker and its newline
+    string(SUBSTRING "${rest}" ${at} -1 rest)
+    math(EXPR line "${line} + 1")
   endif()
-endforeach()
+endwhile()
 if(NOT marked)
   message(FATAL_ERROR "${INPUT} has no line marked '// C++ error here'")
 endif()
 get_filename_component(name ${INPUT} NAME)
+if(DEFINED LINE_ENDS)
+  file(READ ${INPUT} source)
+  string(REPLACE "CR" "\r" ending "${LINE_ENDS}")
+  string(REPLACE "LF" "\n" ending "${ending}")
+  string(REPLACE "\n" "${ending}" source "${source}")
+  get_filename_component(dir ${OUTPUT} DIRECTORY)
+  set(INPUT ${dir}/${LINE_ENDS}/${name})
+  file(WRITE ${INPUT} "${source}")
+endif()
+execute_process(COMMAND ${VVC} ${INPUT} -o ${OUTPUT} RESULT_VARIABLE status ERROR_VARIABLE err)
+if(NOT status EQUAL 0)
+  message(FATAL_ERROR "vvc failed:\n${err}")
+endif()
 execute_process(COMMAND ${CXX} -std=c++17 -fsyntax-only -fmax-errors=0 -I${INCLUDE} ${OUTPUT}
                 RESULT_VARIABLE status ERROR_VARIABLE err)
 if(status EQUAL 0)
