@@ -150,6 +150,20 @@ TEST(Translation, LineDirectivesFollowTheSource) {
   EXPECT_NE(t.cpp.find("#line 13 \"dir/m.vvp\"\nint b;"), std::string::npos) << t.cpp;
 }
 
+// A string continued over two lines, or a raw string, is one token of
+// several lines: the lines after it keep their numbers.
+TEST(Translation, LinesAfterATokenOfSeveralLinesKeepTheirNumbers) {
+  vvc::translation t =
+      vvc::translate_text("m.vvp", "const char* s = \"a\\\nb\";\nconst char* r = R\"(c\nd)\";\nint x;\n");
+  ASSERT_TRUE(t.ok);
+  std::size_t at = t.cpp.find("int x;");
+  ASSERT_NE(at, std::string::npos) << t.cpp;
+  std::size_t directive = t.cpp.rfind("#line 1 \"m.vvp\"\n", at);
+  ASSERT_NE(directive, std::string::npos) << t.cpp;
+  EXPECT_EQ(std::count(t.cpp.begin() + static_cast<long>(directive), t.cpp.begin() + static_cast<long>(at), '\n'), 5)
+      << t.cpp;  // "int x;" on line 5: the directive's own newline and four more
+}
+
 TEST(Translation, GlobalMeshesAreListedForTheHost) {
   vvc::translation t = vvc::translate_text("t.vvp", "mesh S, T;\nstatic mesh U;\nmesh f();\n");
   ASSERT_TRUE(t.ok);
@@ -178,6 +192,38 @@ TEST(Diagnostics, FormatHasFileLineColumnSourceLineAndCaret) {
             "t.vvp:2:15: error: expected 'in' after the operand of 'nextto', found 'b'\n"
             "  \tx = nextto a b;\n"
             "  \t             ^\n");
+}
+
+// A long line is cut around the caret: 200 characters at most, "..." at
+// each cut, the caret under the same character, no UTF-8 character split.
+TEST(Diagnostics, ALongLineIsCutAroundTheCaret) {
+  std::string before, after;
+  for (int i = 0; i < 1000; ++i) before += "\xC3\xA9", after += "\xC3\xA9";  // é
+  vvc::translation t = failed("void f() {\n\tx = g(\"" + before + "\") + nextto a b+ g(\"" + after + "\");\n}\n");
+  ASSERT_FALSE(t.diag.list().empty());
+  std::string text = vvc::format(t.diag.list()[0]);
+  std::size_t l1 = text.find('\n'), l2 = text.find('\n', l1 + 1);
+  std::string shown = text.substr(l1 + 3, l2 - l1 - 3), caret = text.substr(l2 + 3);
+  ASSERT_EQ(shown.compare(0, 3, "..."), 0) << shown;
+  ASSERT_EQ(shown.compare(shown.size() - 3, 3, "..."), 0) << shown;
+  auto characters = [](const std::string& s) {
+    return std::count_if(s.begin(), s.end(), [](char c) { return (static_cast<unsigned char>(c) & 0xC0) != 0x80; });
+  };
+  EXPECT_EQ(characters(shown), 206);  // 200 and the two marks
+  EXPECT_EQ(caret.find_first_not_of(' '), caret.size() - 2) << caret;  // spaces, then "^\n"
+  // The caret's column in the shown line is the 'b' the message names.
+  std::size_t column = caret.size() - 2, byte = 0;
+  for (std::size_t c = 0; byte < shown.size(); ++byte) {
+    if ((static_cast<unsigned char>(shown[byte]) & 0xC0) == 0x80) continue;
+    if (c++ == column) break;
+  }
+  EXPECT_EQ(shown.substr(byte, 2), "b+") << shown << "\n" << caret;
+  // A short line is shown whole.
+  vvc::translation s = failed("void f() {\n  x = nextto a b;\n}\n");
+  EXPECT_EQ(vvc::format(s.diag.list()[0]),
+            "t.vvp:2:16: error: expected 'in' after the operand of 'nextto', found 'b'\n"
+            "    x = nextto a b;\n"
+            "                 ^\n");
 }
 
 TEST(Diagnostics, EmptyDeclaratorInAPropertyBlockIsReported) {
