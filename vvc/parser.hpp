@@ -36,6 +36,7 @@
 #pragma once
 
 #include <initializer_list>
+#include <string>
 #include <string_view>
 #include <vector>
 
@@ -85,11 +86,13 @@ class parser {
     expression,   // a statement or initializer: lambdas have bodies
     declaration,  // namespace or class scope: function bodies too
   };
-  //! balanced = { group | vv-construct | token } up to one of `stops` at depth 0
-  //! (or, with `declaration_ends`, just after a function or namespace body)
+  //! balanced = { group | vv-expression | "$" name | token } up to one of
+  //! `stops` or a closer at depth 0, neither consumed (or, with
+  //! `declaration_ends`, just after a function or namespace body)
   pieces parse_balanced(std::initializer_list<std::string_view> stops, mode m,
                    bool declaration_ends = false);
-  //! group = "(" balanced ")" | "[" balanced "]" | "{" balanced "}" | body | class-body
+  //! group = "(" balanced ")" | "[" balanced "]" | "{" balanced "}"
+  //!       | "{" statements "}" | "{" declarations "}"   (a body; a class or namespace body)
   piece parse_group(const pieces& before, mode m);
   bool starts_lambda_body(const pieces& before) const;
   bool starts_function_body(const pieces& before) const;
@@ -97,12 +100,16 @@ class parser {
   int opens_scope_body(const pieces& before, std::size_t n) const;
 
   // ---- vv expressions (parser_vv.cpp) ----
-  //! Parses a vv expression starting here, if one does; false otherwise.
+  //! vv-expression = old-state | path | query: parses one starting here,
+  //! if one does; false otherwise.
   bool parse_vv_expression(pieces& out);
-  //! operand = prefix-op operand | vv-expression | "`" postfix | path | primary postfix*
+  //! operand = prefix-op operand | query | (old-state | path) postfix*
+  //!         | "(" balanced ")" postfix* | ["::"] name postfix*
+  //!         | (number | character) postfix* | string {string}
   pieces parse_operand(const std::string& context);
   bool starts_operand(const token& t) const;
-  //! postfix = "(" balanced ")" | "[" balanced "]" | "." name | "->" name | "::" name | "$" name | "++" | "--"
+  //! postfix = "(" balanced ")" | "[" balanced "]" | ("." | "->" | "::") ["template"] ["~"] name
+  //!         | "$" name (when allow_property) | "++" | "--" | template-arguments (after a name)
   void parse_postfix(pieces& out, bool allow_property);
   //! property = "$" name, appended to `out`; false after an error.
   bool parse_property(pieces& out);
@@ -122,10 +129,10 @@ class parser {
   stmt_ptr parse_compound();
   stmt_ptr parse_simple();
   bool parse_edit(stmt& s);
+  bool parse_make_list(const std::string& w, std::string_view then, std::vector<pieces>& list);
   bool edit_follows();
   stmt_ptr parse_forall();
   bool parse_vertex_declaration(stmt& s);
-  stmt_ptr parse_body_statements(const token* open);
   void body_statements(stmt_list& out);
 
   // ---- top level (parser_top.cpp) ----
