@@ -8,12 +8,8 @@
 // output file is left (a stale one from an earlier run is removed). An
 // output that would overwrite the program or a file it includes is
 // refused (exit status 2). How the output is written: output_file.hpp.
-#include <sys/stat.h>
-#include <unistd.h>
-
 #include <iostream>
 #include <string>
-#include <vector>
 
 #include "output_file.hpp"
 #include "translate.hpp"
@@ -67,38 +63,33 @@ int main(int argc, char** argv) {
     std::cerr << "vvc: " << (input.empty() ? "no input file" : "no output file (-o)") << "\n" << usage;
     return 2;
   }
+  const bool to_stdout = output == "-";
   // Checked before translating, so that no path below (not even removing a
   // stale output after an error) can touch the program.
-  if (output != "-" && vvc::same_file(output, input)) {
+  if (!to_stdout && vvc::same_file(output, input)) {
     std::cerr << "vvc: refusing to write over the program: -o '" << output << "' is the input file '" << input
               << "'\n";
     return 2;
   }
-  const vvc::output_file out = output == "-" ? vvc::output_file{} : vvc::plan_output(output);
-  if (output != "-" && out.kind == vvc::output_file::refused) {
+  const vvc::output_file out = to_stdout ? vvc::output_file{} : vvc::plan_output(output);
+  if (!to_stdout && out.kind == vvc::output_file::refused) {
     std::cerr << output << ": error: cannot write file: " << out.why << "\n";
     return 1;
   }
   std::string unreadable;
   vvc::translation t = vvc::translate_file(input, &unreadable);
-  const std::vector<std::string> sources = t.sources.paths();
-  if (const std::string* source = output == "-" ? nullptr : vvc::source_at(output, sources)) {
-    std::cerr << "vvc: refusing to write over the program: -o '" << output << "' is '" << *source
+  if (std::string source = to_stdout ? "" : vvc::source_at(output, t.sources.paths()); !source.empty()) {
+    std::cerr << "vvc: refusing to write over the program: -o '" << output << "' is '" << source
               << "', which the program includes\n";
     return 2;
   }
   if (!t.ok) {
     if (!unreadable.empty()) std::cerr << input << ": error: cannot read file: " << unreadable << "\n";
     t.diag.print(std::cerr);
-    // A stale output of an earlier run must not pass for this one's; a
-    // device or pipe has nothing stale to remove.
-    struct stat st {};
-    if (output != "-" && out.kind == vvc::output_file::replace && ::stat(out.target.c_str(), &st) == 0 &&
-        S_ISREG(st.st_mode))
-      ::unlink(out.target.c_str());
+    if (!to_stdout) vvc::remove_stale_output(out);
     return 1;
   }
-  if (output == "-") {
+  if (to_stdout) {
     std::cout << t.cpp;
     return std::cout.flush() ? 0 : 1;
   }

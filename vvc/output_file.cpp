@@ -137,16 +137,22 @@ std::string write_output(const output_file& out, const std::string& text) {
   return out.why;
 }
 
+void remove_stale_output(const output_file& out) {
+  struct stat st {};
+  if (out.kind == output_file::replace && ::stat(out.target.c_str(), &st) == 0 && S_ISREG(st.st_mode))
+    ::unlink(out.target.c_str());
+}
+
 bool same_file(const std::string& a, const std::string& b) {
   struct stat sa {}, sb {};
   return ::stat(a.c_str(), &sa) == 0 && ::stat(b.c_str(), &sb) == 0 && sa.st_dev == sb.st_dev &&
          sa.st_ino == sb.st_ino;
 }
 
-const std::string* source_at(const std::string& path, const std::vector<std::string>& sources) {
+std::string source_at(const std::string& path, const std::vector<std::string>& sources) {
   for (const std::string& s : sources)
-    if (same_file(path, s)) return &s;
-  return nullptr;
+    if (same_file(path, s)) return s;
+  return "";
 }
 
 }  // namespace vvc

@@ -35,11 +35,16 @@ output_file plan_output(const std::string& path);
 //! device").
 std::string write_output(const output_file& out, const std::string& text);
 
+//! After a failed translation: removes what an earlier run wrote, so that
+//! it cannot pass for this one's output. Only a regular file (the one a
+//! link names; the link stays); never a device or a pipe.
+void remove_stale_output(const output_file& out);
+
 //! Whether the two paths name one existing file (the same device and
 //! inode, however spelt: "./a.vvp", a link, a hard link).
 bool same_file(const std::string& a, const std::string& b);
 
-//! The first of `sources` that `path` names, or nullptr.
-const std::string* source_at(const std::string& path, const std::vector<std::string>& sources);
+//! The first of `sources` that `path` names, or "".
+std::string source_at(const std::string& path, const std::vector<std::string>& sources);
 
 }  // namespace vvc
