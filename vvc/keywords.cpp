@@ -10,28 +10,29 @@ const std::vector<vv_word>& vv_words() {
   using e = edit_kind;
   using f = edit_form;
   static const std::vector<vv_word> table = {
-      {"nextto", r::query, true},
-      {"prevto", r::query, true},
-      {"valence", r::query, true},
-      {"labelof", r::query, true},
-      {"next", r::query},  // next(I)to X in V
-      {"prev", r::query},
-      {"any", r::query},   // any in V
-      {"flagged", r::query},
-      {"is", r::query},    // is X in V
-      // edit word                then     or_then   last  kind          or_kind          flag may be      list
-      {"make", r::edit, false,    {"nb_of", "",       "",   e::make,      e::make,         f::nowhere,     true}},
-      {"erase", r::edit, false,   {"from",  "",       "",   e::erase,     e::erase,        f::first}},
-      {"remove", r::edit, false,  {"from",  "",       "",   e::remove,    e::remove}},
-      {"replace", r::edit, false, {"with",  "",       "in", e::replace,   e::replace,      f::first}},
-      {"merge", r::edit, false,   {"with",  "",       "",   e::merge,     e::merge}},
-      {"splice", r::edit, false,  {"after", "before", "in", e::splice_after, e::splice_before, f::second}},
-      {"flag", r::edit, false,    {"in",    "",       "",   e::flag,      e::flag}},
-      {"add", r::edit, false,     {"to",    "",       "",   e::add,       e::add}},
-      {"clear", r::edit, false,   {"",      "",       "",   e::clear,     e::clear}},
-      {"synchronise", r::edit, true, {"",   "",       "",   e::synchronise, e::synchronise}},
-      {"synchronize", r::edit, true, {"",   "",       "",   e::synchronise, e::synchronise}},
-      {"forall", r::loop, true},
+      // query      role      reserved then
+      {"nextto",   r::query, true,  "in"},
+      {"prevto",   r::query, true,  "in"},
+      {"valence",  r::query, true},
+      {"labelof",  r::query, true},
+      {"next",     r::query, false, "to"},  // next(I)to X in V
+      {"prev",     r::query, false, "to"},
+      {"any",      r::query, false, "in"},  // any in V
+      {"flagged",  r::query, false, "in"},
+      {"is",       r::query, false, "in"},  // is X in V
+      // edit         role     reserved then    or_then   {last  kind            or_kind       flag may be  list}
+      {"make",        r::edit, false, "nb_of", "",      {"",   e::make,        e::make,         f::nowhere, true}},
+      {"erase",       r::edit, false, "from",  "",      {"",   e::erase,       e::erase,        f::first}},
+      {"remove",      r::edit, false, "from",  "",      {"",   e::remove,      e::remove}},
+      {"replace",     r::edit, false, "with",  "",      {"in", e::replace,     e::replace,      f::first}},
+      {"merge",       r::edit, false, "with",  "",      {"",   e::merge,       e::merge}},
+      {"splice",      r::edit, false, "after", "before", {"in", e::splice_after, e::splice_before, f::second}},
+      {"flag",        r::edit, false, "in",    "",      {"",   e::flag,        e::flag}},
+      {"add",         r::edit, false, "to",    "",      {"",   e::add,         e::add}},
+      {"clear",       r::edit, false, "",      "",      {"",   e::clear,       e::clear}},
+      {"synchronise", r::edit, true,  "",      "",      {"",   e::synchronise, e::synchronise}},
+      {"synchronize", r::edit, true,  "",      "",      {"",   e::synchronise, e::synchronise}},
+      {"forall",      r::loop, true,  "in"},
       {"in", r::connective},
       {"to", r::connective},
       {"from", r::connective},

@@ -20,12 +20,12 @@ enum class word_role {
   path_step,        // next, prev, swap between @( ... ) and @
 };
 
-//! How an edit reads: `word first then second [last third] ;`, or
-//! `word first ;` when `then` is empty (clear, synchronise). make's first
-//! operand is a list `{a, b}`; `flag` may stand for one operand of some.
+//! How an edit reads: `word first then second [last third] ;` (then and
+//! or_then are the word's, below), or `word first ;` when it has no `then`
+//! (clear, synchronise). make's first operand is a list `{a, b}`; `flag`
+//! may stand for one operand of some.
 struct edit_form {
-  std::string_view then, or_then;  // the word after the first operand; splice takes either of two
-  std::string_view last;           // the word before a third operand, or ""
+  std::string_view last;  // the word before a third operand, or ""
   edit_kind kind = edit_kind::make, or_kind = edit_kind::make;  // with `then`, with `or_then`
   enum { nowhere, first, second } flag_may_be = nowhere;  // the operand `flag` may stand for
   bool list_first = false;                                 // make {a, b} nb_of V
@@ -36,6 +36,10 @@ struct vv_word {
   word_role role;
   //! Never an identifier: the vv form starts with no lookahead.
   bool reserved = false;
+  //! The word after the first operand (nextto X in, next(I) to, erase X
+  //! from, forall v in), or right after the word when it takes none
+  //! (any in); splice takes either of two.
+  std::string_view then = {}, or_then = {};
   edit_form edit = {};  // word_role::edit only
 };
 

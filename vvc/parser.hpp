@@ -38,12 +38,15 @@
 #include <initializer_list>
 #include <string>
 #include <string_view>
+#include <unordered_map>
 #include <vector>
 
 #include "diagnostics.hpp"
 #include "syntax.hpp"
 
 namespace vvc {
+
+struct vv_word;
 
 class parser {
  public:
@@ -135,6 +138,19 @@ class parser {
   bool parse_vertex_declaration(stmt& s);
   void body_statements(stmt_list& out);
 
+  // ---- misspelt vv words (parser_spelling.cpp) ----
+  //! Each reports "unknown word 'W'; did you mean 'V'?" when the name at
+  //! the cursor stands where C++ could not use a name (the places are
+  //! listed in parser_spelling.cpp), and says whether it did (which word).
+  const vv_word* misspelt_word_in_expression(std::initializer_list<std::string_view> stops = {});
+  bool misspelt_edit_at_statement_start();
+  //! At the top level, also reads the block the name was meant to start.
+  bool misspelt_block_word_at_top_level();
+  bool near_a_statement_or_query_word(std::string_view name);
+  const token& token_after_operand(std::size_t start_at);
+  bool declared_as_handle(std::string_view name);
+  bool only_before_a_name_and_semicolon(std::string_view word);
+
   // ---- top level (parser_top.cpp) ----
   void parse_property_block(program& p);
   void parse_execution_block(program& p);
@@ -170,6 +186,10 @@ class parser {
   const token* first_use_[3] = {nullptr, nullptr, nullptr};  // edge, vertex, mesh outside blocks
   enum : signed char { unknown, there, not_there };
   std::vector<signed char> looked_ahead_;  // per token: the answer of looks_ahead there
+  std::vector<std::size_t> operand_ends_;  // per token: token_after_operand's answer plus one
+  std::unordered_map<std::string_view, bool> near_vv_word_;  // per name: near a statement's or query's word
+  bool handles_found_ = false;              // handle_names_ filled
+  std::vector<std::string_view> handle_names_;  // names declared as mesh or vertex, sorted
 };
 
 template <class Attempt>

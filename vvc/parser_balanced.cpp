@@ -102,6 +102,7 @@ pieces parser::parse_balanced(std::initializer_list<std::string_view> stops, mod
       continue;
     }
     refuse_writing_the_old_state(out, t);
+    if (t.is_identifier()) misspelt_word_in_expression(stops);
     piece p;
     p.tok = take();
     out.push_back(std::move(p));

@@ -115,6 +115,11 @@ stmt_ptr parser::parse_statement() {
       return s;
     }
     if (w == "forall") return parse_forall();
+    // `foral v in M {...}`: reported, and read as the loop it was meant to
+    // be (its body is a statement, which C++ would not end).
+    if (peek(1).is_identifier() && peek(2).is_word("in"))
+      if (const vv_word* meant = misspelt_word_in_expression(); meant && meant->role == word_role::loop)
+        return parse_forall();
     if (has_role(w, word_role::edit) && edit_follows()) {
       auto s = make_stmt(stmt_kind::edit, &t);
       if (!parse_edit(*s)) recover();
@@ -126,6 +131,7 @@ stmt_ptr parser::parse_statement() {
       if (!parse_vertex_declaration(*s)) recover();
       return s;
     }
+    misspelt_edit_at_statement_start();  // `synchronis M;` (parsed on as C++)
   }
   return parse_simple();
 }
@@ -146,12 +152,11 @@ stmt_ptr parser::parse_simple() {
 bool parser::edit_follows() {
   const vv_word& edit = *find_word(peek().text, word_role::edit);
   if (edit.reserved) return true;  // synchronise
-  const edit_form& form = edit.edit;
   auto continues_at = [&](const token& t) {
-    return !form.then.empty() && (t.is(form.then) || (!form.or_then.empty() && t.is(form.or_then)));
+    return !edit.then.empty() && (t.is(edit.then) || (!edit.or_then.empty() && t.is(edit.or_then)));
   };
   const token& next = peek(1);
-  if (form.list_first) return next.is("{") || next.is_word(form.then);
+  if (edit.edit.list_first) return next.is("{") || next.is_word(edit.then);
   // The operand is missing but the edit's next word is there: `add to M;`.
   if (next.is_identifier() && continues_at(next)) return true;
   if (next.is("("))
@@ -177,7 +182,9 @@ bool parser::edit_follows() {
 //      | ("clear" | "synchronise" | "synchronize") operand ";"
 bool parser::parse_edit(stmt& s) {
   std::string w(take()->text);
-  const edit_form& form = find_word(w, word_role::edit)->edit;
+  const vv_word& edit = *find_word(w, word_role::edit);
+  const edit_form& form = edit.edit;
+  std::string_view then = edit.then, or_then = edit.or_then;
   s.edit = form.kind;
   auto operand = [&](const std::string& context) { s.operands.push_back(parse_operand(context)); };
   auto word = [&](std::string_view kw, const std::string& context) { return expect(kw, context) != nullptr; };
@@ -191,9 +198,9 @@ bool parser::parse_edit(stmt& s) {
   bool ok = true;
   if (form.list_first) {
     std::vector<pieces> list;
-    if (!parse_make_list(w, form.then, list)) return false;
-    ok = word(form.then, "after the list of '" + w + "'");
-    if (ok) operand("after '" + std::string(form.then) + "'");
+    if (!parse_make_list(w, then, list)) return false;
+    ok = word(then, "after the list of '" + w + "'");
+    if (ok) operand("after '" + std::string(then) + "'");
     s.operands.insert(s.operands.end(), std::make_move_iterator(list.begin()),
                       std::make_move_iterator(list.end()));
     if (!ok) return false;
@@ -203,32 +210,32 @@ bool parser::parse_edit(stmt& s) {
   // How messages name the form: 'replace ... with ... in ...'; a choice of
   // two words is left out ('splice ... in ...').
   std::string shape = "'" + w;
-  if (!form.then.empty() && form.or_then.empty()) shape += " ... " + std::string(form.then);
+  if (!then.empty() && or_then.empty()) shape += " ... " + std::string(then);
   if (!form.last.empty()) shape += " ... " + std::string(form.last);
   shape += " ...'";
 
-  if (form.flag_may_be != edit_form::first || !flag_before(form.then)) {
+  if (form.flag_may_be != edit_form::first || !flag_before(then)) {
     // A missing operand: a connective is no operand, but after or before
     // would pass for a name.
-    if (!form.then.empty() && !has_role(form.then, word_role::connective) &&
-        (at(form.then) || (!form.or_then.empty() && at(form.or_then)))) {
+    if (!then.empty() && !has_role(then, word_role::connective) &&
+        (at(then) || (!or_then.empty() && at(or_then)))) {
       error(peek(), "expected a vertex after '" + w + "', found " + found(peek()));
       return false;
     }
     operand("after '" + w + "'");
   }
-  if (!form.then.empty()) {
-    std::string taken(form.then);
-    if (!form.or_then.empty()) {
-      if (!at(form.then) && !at(form.or_then)) {
-        error(peek(), "expected '" + std::string(form.then) + "' or '" + std::string(form.or_then) + "' in '" + w +
+  if (!then.empty()) {
+    std::string taken(then);
+    if (!or_then.empty()) {
+      if (!at(then) && !at(or_then)) {
+        error(peek(), "expected '" + std::string(then) + "' or '" + std::string(or_then) + "' in '" + w +
                           "', found " + found(peek()));
         return false;
       }
       taken = std::string(take()->text);
-      if (taken == form.or_then) s.edit = form.or_kind;
+      if (taken == or_then) s.edit = form.or_kind;
     } else {
-      ok = word(form.then, "in " + shape);
+      ok = word(then, "in " + shape);
     }
     if (ok && (form.flag_may_be != edit_form::second || !flag_before(form.last))) operand("after '" + taken + "'");
   }

@@ -23,6 +23,8 @@ program parser::parse_program() {
     } else if (t.is(")") || t.is("]") || t.is("}")) {
       error(t, "unmatched '" + std::string(t.text) + "'");
       take();
+    } else if (misspelt_block_word_at_top_level()) {
+      // `stpe { ... }`: reported, and read as the block it was meant to be
     } else {
       parse_top_declaration(p);
     }
