@@ -132,7 +132,7 @@ TEST(Lexer, Errors) {
 // end, as for GCC, also inside comments, continuations and raw strings.
 TEST(Lexer, CrCrLfAndLfAllEndLines) {
   const std::string lf =
-      "a\n/* two\nlines */ b\n#define M \\\n  1\nc // a comment \\\ncontinued\nd R\"(x\ny)\" e\n\nf";
+      "a\n/* two\nlines */ b\n#define M \\\n  1\nc // a comment \\\ncontinued\nd R\"(x\ny)\" e\n\nf \"g\\\nh\" i";
   for (std::string end : {"\r", "\r\n"}) {
     std::string text;
     for (char c : lf) text += c == '\n' ? end : std::string(1, c);
