@@ -52,7 +52,11 @@ class diagnostics {
   std::vector<const source_file*> files_;
 };
 
-//! One diagnostic as text (with its source line and caret).
+//! The most characters of a source line a diagnostic shows.
+constexpr std::size_t max_shown_columns = 200;
+
+//! One diagnostic as text (with its source line and caret; of a longer
+//! line, the max_shown_columns around the caret).
 std::string format(const diagnostic& d);
 
 }  // namespace vvc

@@ -7,28 +7,32 @@ namespace vvc {
 
 const std::vector<vv_word>& vv_words() {
   using r = word_role;
+  using e = edit_kind;
+  using f = edit_form;
   static const std::vector<vv_word> table = {
-      {"nextto", r::query, true},
-      {"prevto", r::query, true},
-      {"valence", r::query, true},
-      {"labelof", r::query, true},
-      {"next", r::query},  // next(I)to X in V
-      {"prev", r::query},
-      {"any", r::query},   // any in V
-      {"flagged", r::query},
-      {"is", r::query},    // is X in V
-      {"make", r::edit, false, "nb_of"},
-      {"erase", r::edit, false, "from"},
-      {"remove", r::edit, false, "from"},
-      {"replace", r::edit, false, "with"},
-      {"merge", r::edit, false, "with"},
-      {"splice", r::edit, false, "after", "before"},
-      {"flag", r::edit, false, "in"},
-      {"add", r::edit, false, "to"},
-      {"clear", r::edit, false, ";"},
-      {"synchronise", r::edit, true},
-      {"synchronize", r::edit, true},
-      {"forall", r::loop, true},
+      // query      role      reserved then
+      {"nextto",   r::query, true,  "in"},
+      {"prevto",   r::query, true,  "in"},
+      {"valence",  r::query, true},
+      {"labelof",  r::query, true},
+      {"next",     r::query, false, "to"},  // next(I)to X in V
+      {"prev",     r::query, false, "to"},
+      {"any",      r::query, false, "in"},  // any in V
+      {"flagged",  r::query, false, "in"},
+      {"is",       r::query, false, "in"},  // is X in V
+      // edit         role     reserved then    or_then   {last  kind            or_kind       flag may be  list}
+      {"make",        r::edit, false, "nb_of", "",      {"",   e::make,        e::make,         f::nowhere, true}},
+      {"erase",       r::edit, false, "from",  "",      {"",   e::erase,       e::erase,        f::first}},
+      {"remove",      r::edit, false, "from",  "",      {"",   e::remove,      e::remove}},
+      {"replace",     r::edit, false, "with",  "",      {"in", e::replace,     e::replace,      f::first}},
+      {"merge",       r::edit, false, "with",  "",      {"",   e::merge,       e::merge}},
+      {"splice",      r::edit, false, "after", "before", {"in", e::splice_after, e::splice_before, f::second}},
+      {"flag",        r::edit, false, "in",    "",      {"",   e::flag,        e::flag}},
+      {"add",         r::edit, false, "to",    "",      {"",   e::add,         e::add}},
+      {"clear",       r::edit, false, "",      "",      {"",   e::clear,       e::clear}},
+      {"synchronise", r::edit, true,  "",      "",      {"",   e::synchronise, e::synchronise}},
+      {"synchronize", r::edit, true,  "",      "",      {"",   e::synchronise, e::synchronise}},
+      {"forall",      r::loop, true,  "in"},
       {"in", r::connective},
       {"to", r::connective},
       {"from", r::connective},
@@ -50,6 +54,16 @@ const std::vector<vv_word>& vv_words() {
       {"swap", r::path_step},
   };
   return table;
+}
+
+edit_kind with_flag_operand(edit_kind k) {
+  switch (k) {
+    case edit_kind::erase: return edit_kind::erase_flag;
+    case edit_kind::replace: return edit_kind::replace_flag;
+    case edit_kind::splice_after: return edit_kind::splice_after_flag;
+    case edit_kind::splice_before: return edit_kind::splice_before_flag;
+    default: return k;
+  }
 }
 
 const vv_word* find_word(std::string_view w, word_role role) {

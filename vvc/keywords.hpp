@@ -20,14 +20,27 @@ enum class word_role {
   path_step,        // next, prev, swap between @( ... ) and @
 };
 
+//! How an edit reads: `word first then second [last third] ;` (then and
+//! or_then are the word's, below), or `word first ;` when it has no `then`
+//! (clear, synchronise). make's first operand is a list `{a, b}`; `flag`
+//! may stand for one operand of some.
+struct edit_form {
+  std::string_view last;  // the word before a third operand, or ""
+  edit_kind kind = edit_kind::make, or_kind = edit_kind::make;  // with `then`, with `or_then`
+  enum { nowhere, first, second } flag_may_be = nowhere;  // the operand `flag` may stand for
+  bool list_first = false;                                 // make {a, b} nb_of V
+};
+
 struct vv_word {
   std::string_view text;
   word_role role;
   //! Never an identifier: the vv form starts with no lookahead.
   bool reserved = false;
-  //! An edit: the word after its first operand (`;` for clear); splice
-  //! takes either of two.
+  //! The word after the first operand (nextto X in, next(I) to, erase X
+  //! from, forall v in), or right after the word when it takes none
+  //! (any in); splice takes either of two.
   std::string_view then = {}, or_then = {};
+  edit_form edit = {};  // word_role::edit only
 };
 
 //! Every vv word; a word with two roles has two rows.
@@ -39,6 +52,10 @@ inline bool has_role(std::string_view w, word_role role) { return find_word(w, r
 
 //! vv words that are never identifiers (nextto, forall, vertex, ...).
 bool is_reserved_vv_word(std::string_view w);
+
+//! The edit with `flag` for an operand: erase -> erase_flag, splice_after
+//! -> splice_after_flag, ...
+edit_kind with_flag_operand(edit_kind k);
 
 //! Names of the execution blocks, in the order of the table.
 std::vector<std::string_view> execution_block_names();

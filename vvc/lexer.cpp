@@ -49,11 +49,11 @@ class lexer {
         space = true, line_start = true;
         continue;
       }
-      if (c == ' ' || c == '\t' || c == '\r' || c == '\f' || c == '\v') {
+      if (c == ' ' || c == '\t' || c == '\f' || c == '\v') {  // line ends are LF (source_file)
         ++pos_, space = true;
         continue;
       }
-      if (c == '\\' && pos_ + 1 < s_.size() && (s_[pos_ + 1] == '\n' || s_[pos_ + 1] == '\r')) {
+      if (c == '\\' && pos_ + 1 < s_.size() && s_[pos_ + 1] == '\n') {
         ++pos_, space = true;  // a line continuation between tokens
         continue;
       }
@@ -137,9 +137,7 @@ class lexer {
   void line_comment() {
     for (;;) {
       while (pos_ < s_.size() && s_[pos_] != '\n') ++pos_;
-      std::size_t end = pos_;
-      if (end > 0 && s_[end - 1] == '\r') --end;
-      if (pos_ >= s_.size() || end == 0 || s_[end - 1] != '\\') return;
+      if (pos_ >= s_.size() || pos_ == 0 || s_[pos_ - 1] != '\\') return;
       ++pos_, ++line_, line_begin_ = pos_;  // the next line is comment too
     }
   }

@@ -5,15 +5,13 @@
 //
 // Diagnostics go to standard error as file:line:col: error: message, with
 // the source line and a caret. On any error the exit status is 1 and no
-// output file is left (a stale one from an earlier run is removed).
-#include <cstdio>
-#include <cstring>
-#include <fstream>
+// output file is left (a stale one from an earlier run is removed). An
+// output that would overwrite the program or a file it includes is
+// refused (exit status 2). How the output is written: output_file.hpp.
 #include <iostream>
 #include <string>
 
-#include <vv/io/files.hpp>
-
+#include "output_file.hpp"
 #include "translate.hpp"
 
 namespace {
@@ -26,7 +24,8 @@ const char* usage =
     "interpreter. #line directives map the output back to INPUT.vvp.\n"
     "\n"
     "options:\n"
-    "  -o FILE     where to write the C++ ('-' for standard output)\n"
+    "  -o FILE     where to write the C++ ('-' for standard output; never\n"
+    "              over the program or a file it includes)\n"
     "  --help      this text\n"
     "  --version   the translator's version\n";
 
@@ -64,22 +63,39 @@ int main(int argc, char** argv) {
     std::cerr << "vvc: " << (input.empty() ? "no input file" : "no output file (-o)") << "\n" << usage;
     return 2;
   }
+  const bool to_stdout = output == "-";
+  // Checked before translating, so that no path below (not even removing a
+  // stale output after an error) can touch the program.
+  if (!to_stdout && vvc::same_file(output, input)) {
+    std::cerr << "vvc: refusing to write over the program: -o '" << output << "' is the input file '" << input
+              << "'\n";
+    return 2;
+  }
+  const vvc::output_file out = to_stdout ? vvc::output_file{} : vvc::plan_output(output);
+  if (!to_stdout && out.kind == vvc::output_file::refused) {
+    std::cerr << output << ": error: cannot write file: " << out.why << "\n";
+    return 1;
+  }
   std::string unreadable;
   vvc::translation t = vvc::translate_file(input, &unreadable);
+  if (std::string source = to_stdout ? "" : vvc::source_at(output, t.sources.paths()); !source.empty()) {
+    std::cerr << "vvc: refusing to write over the program: -o '" << output << "' is '" << source
+              << "', which the program includes\n";
+    return 2;
+  }
   if (!t.ok) {
     if (!unreadable.empty()) std::cerr << input << ": error: cannot read file: " << unreadable << "\n";
     t.diag.print(std::cerr);
-    if (output != "-") std::remove(output.c_str());
+    if (!to_stdout) vvc::remove_stale_output(out);
     return 1;
   }
-  if (output == "-") {
+  if (to_stdout) {
     std::cout << t.cpp;
     return std::cout.flush() ? 0 : 1;
   }
-  try {
-    vv::io::write_text_file(output, t.cpp);  // atomically: never half a file
-  } catch (const std::exception& e) {
-    std::cerr << e.what() << "\n";
+  std::string why = vvc::write_output(out, t.cpp);
+  if (!why.empty()) {
+    std::cerr << output << ": error: cannot write file: " << why << "\n";
     return 1;
   }
   return 0;

@@ -36,13 +36,17 @@
 #pragma once
 
 #include <initializer_list>
+#include <string>
 #include <string_view>
+#include <unordered_map>
 #include <vector>
 
 #include "diagnostics.hpp"
 #include "syntax.hpp"
 
 namespace vvc {
+
+struct vv_word;
 
 class parser {
  public:
@@ -85,11 +89,13 @@ class parser {
     expression,   // a statement or initializer: lambdas have bodies
     declaration,  // namespace or class scope: function bodies too
   };
-  //! balanced = { group | vv-construct | token } up to one of `stops` at depth 0
-  //! (or, with `declaration_ends`, just after a function or namespace body)
+  //! balanced = { group | vv-expression | "$" name | token } up to one of
+  //! `stops` or a closer at depth 0, neither consumed (or, with
+  //! `declaration_ends`, just after a function or namespace body)
   pieces parse_balanced(std::initializer_list<std::string_view> stops, mode m,
                    bool declaration_ends = false);
-  //! group = "(" balanced ")" | "[" balanced "]" | "{" balanced "}" | body | class-body
+  //! group = "(" balanced ")" | "[" balanced "]" | "{" balanced "}"
+  //!       | "{" statements "}" | "{" declarations "}"   (a body; a class or namespace body)
   piece parse_group(const pieces& before, mode m);
   bool starts_lambda_body(const pieces& before) const;
   bool starts_function_body(const pieces& before) const;
@@ -97,12 +103,16 @@ class parser {
   int opens_scope_body(const pieces& before, std::size_t n) const;
 
   // ---- vv expressions (parser_vv.cpp) ----
-  //! Parses a vv expression starting here, if one does; false otherwise.
+  //! vv-expression = old-state | path | query: parses one starting here,
+  //! if one does; false otherwise.
   bool parse_vv_expression(pieces& out);
-  //! operand = prefix-op operand | vv-expression | "`" postfix | path | primary postfix*
+  //! operand = prefix-op operand | query | (old-state | path) postfix*
+  //!         | "(" balanced ")" postfix* | ["::"] name postfix*
+  //!         | (number | character) postfix* | string {string}
   pieces parse_operand(const std::string& context);
   bool starts_operand(const token& t) const;
-  //! postfix = "(" balanced ")" | "[" balanced "]" | "." name | "->" name | "::" name | "$" name | "++" | "--"
+  //! postfix = "(" balanced ")" | "[" balanced "]" | ("." | "->" | "::") ["template"] ["~"] name
+  //!         | "$" name (when allow_property) | "++" | "--" | template-arguments (after a name)
   void parse_postfix(pieces& out, bool allow_property);
   //! property = "$" name, appended to `out`; false after an error.
   bool parse_property(pieces& out);
@@ -122,11 +132,24 @@ class parser {
   stmt_ptr parse_compound();
   stmt_ptr parse_simple();
   bool parse_edit(stmt& s);
+  bool parse_make_list(const std::string& w, std::string_view then, std::vector<pieces>& list);
   bool edit_follows();
   stmt_ptr parse_forall();
   bool parse_vertex_declaration(stmt& s);
-  stmt_ptr parse_body_statements(const token* open);
   void body_statements(stmt_list& out);
+
+  // ---- misspelt vv words (parser_spelling.cpp) ----
+  //! Each reports "unknown word 'W'; did you mean 'V'?" when the name at
+  //! the cursor stands where C++ could not use a name (the places are
+  //! listed in parser_spelling.cpp), and says whether it did (which word).
+  const vv_word* misspelt_word_in_expression(std::initializer_list<std::string_view> stops = {});
+  bool misspelt_edit_at_statement_start();
+  //! At the top level, also reads the block the name was meant to start.
+  bool misspelt_block_word_at_top_level();
+  bool near_a_statement_or_query_word(std::string_view name);
+  const token& token_after_operand(std::size_t start_at);
+  bool declared_as_handle(std::string_view name);
+  bool only_before_a_name_and_semicolon(std::string_view word);
 
   // ---- top level (parser_top.cpp) ----
   void parse_property_block(program& p);
@@ -163,6 +186,10 @@ class parser {
   const token* first_use_[3] = {nullptr, nullptr, nullptr};  // edge, vertex, mesh outside blocks
   enum : signed char { unknown, there, not_there };
   std::vector<signed char> looked_ahead_;  // per token: the answer of looks_ahead there
+  std::vector<std::size_t> operand_ends_;  // per token: token_after_operand's answer plus one
+  std::unordered_map<std::string_view, bool> near_vv_word_;  // per name: near a statement's or query's word
+  bool handles_found_ = false;              // handle_names_ filled
+  std::vector<std::string_view> handle_names_;  // names declared as mesh or vertex, sorted
 };
 
 template <class Attempt>

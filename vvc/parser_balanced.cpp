@@ -76,7 +76,8 @@ void parser::refuse_writing_the_old_state(const pieces& out, const token& op) {
 }
 
 // balanced = { group | vv-expression | "$" name | token } up to a stop token (or
-// a closer) at this depth; neither is consumed.
+// a closer) at this depth; neither is consumed. With declaration_ends, it
+// ends just after a function or namespace body.
 pieces parser::parse_balanced(std::initializer_list<std::string_view> stops, mode m,
                          bool declaration_ends) {
   pieces out;
@@ -101,6 +102,7 @@ pieces parser::parse_balanced(std::initializer_list<std::string_view> stops, mod
       continue;
     }
     refuse_writing_the_old_state(out, t);
+    if (t.is_identifier()) misspelt_word_in_expression(stops);
     piece p;
     p.tok = take();
     out.push_back(std::move(p));

@@ -115,6 +115,11 @@ stmt_ptr parser::parse_statement() {
       return s;
     }
     if (w == "forall") return parse_forall();
+    // `foral v in M {...}`: reported, and read as the loop it was meant to
+    // be (its body is a statement, which C++ would not end).
+    if (peek(1).is_identifier() && peek(2).is_word("in"))
+      if (const vv_word* meant = misspelt_word_in_expression(); meant && meant->role == word_role::loop)
+        return parse_forall();
     if (has_role(w, word_role::edit) && edit_follows()) {
       auto s = make_stmt(stmt_kind::edit, &t);
       if (!parse_edit(*s)) recover();
@@ -126,6 +131,7 @@ stmt_ptr parser::parse_statement() {
       if (!parse_vertex_declaration(*s)) recover();
       return s;
     }
+    misspelt_edit_at_statement_start();  // `synchronis M;` (parsed on as C++)
   }
   return parse_simple();
 }
@@ -146,9 +152,11 @@ stmt_ptr parser::parse_simple() {
 bool parser::edit_follows() {
   const vv_word& edit = *find_word(peek().text, word_role::edit);
   if (edit.reserved) return true;  // synchronise
-  auto continues_at = [&](const token& t) { return t.is(edit.then) || (!edit.or_then.empty() && t.is(edit.or_then)); };
+  auto continues_at = [&](const token& t) {
+    return !edit.then.empty() && (t.is(edit.then) || (!edit.or_then.empty() && t.is(edit.or_then)));
+  };
   const token& next = peek(1);
-  if (edit.text == "make") return next.is("{") || next.is_word("nb_of");
+  if (edit.edit.list_first) return next.is("{") || next.is_word(edit.then);
   // The operand is missing but the edit's next word is there: `add to M;`.
   if (next.is_identifier() && continues_at(next)) return true;
   if (next.is("("))
@@ -161,100 +169,102 @@ bool parser::edit_follows() {
   return starts_operand(next) && (!is_prefix_operator(next) || next.is("!") || next.is("~"));
 }
 
-// edit = "make" "{" balanced {"," balanced} "}" "nb_of" operand ";"
-//      | "erase" ("flag" | operand) "from" operand ";"
+// edit = "make" make-list "nb_of" operand ";"
+//      | word first then second [last third] ";"   (each word's form: keywords.cpp)
+// so that:
+//        "erase" ("flag" | operand) "from" operand ";"
+//      | "remove" operand "from" operand ";"
 //      | "replace" ("flag" | operand) "with" operand "in" operand ";"
+//      | "merge" operand "with" operand ";"
 //      | "splice" operand ("after" | "before") ("flag" | operand) "in" operand ";"
 //      | "flag" operand "in" operand ";"
-//      | "add" operand "to" operand ";" | "remove" operand "from" operand ";"
-//      | "merge" operand "with" operand ";"
+//      | "add" operand "to" operand ";"
 //      | ("clear" | "synchronise" | "synchronize") operand ";"
 bool parser::parse_edit(stmt& s) {
   std::string w(take()->text);
+  const vv_word& edit = *find_word(w, word_role::edit);
+  const edit_form& form = edit.edit;
+  std::string_view then = edit.then, or_then = edit.or_then;
+  s.edit = form.kind;
   auto operand = [&](const std::string& context) { s.operands.push_back(parse_operand(context)); };
-  auto word = [&](std::string_view kw, const std::string& context) {
-    return expect(kw, context) != nullptr;
+  auto word = [&](std::string_view kw, const std::string& context) { return expect(kw, context) != nullptr; };
+  // `flag` in place of an operand, when `kw` follows it.
+  auto flag_before = [&](std::string_view kw) {
+    if (!(at("flag") && peek(1).is_word(kw))) return false;
+    take();
+    s.edit = with_flag_operand(s.edit);
+    return true;
   };
-  auto flag_then = [&](std::string_view kw) { return at("flag") && peek(1).is_word(kw); };
   bool ok = true;
-  if (w == "make") {
-    s.edit = edit_kind::make;
-    if (!at("{")) {
-      error(peek(), "expected '{' to start the list of 'make', found " + found(peek()));
-      return false;
-    }
-    const token* open = take();
+  if (form.list_first) {
     std::vector<pieces> list;
-    while (!at("}") && !at_end()) {
-      list.push_back(parse_balanced({",", "nb_of", ";"}, mode::expression));
-      if (list.back().empty()) error(peek(), "expected a vertex in the list of 'make'");
-      if (!accept(",")) break;
-    }
-    if (!accept("}")) {
-      error(at_end() ? *open : peek(), "expected '}' to end the list of 'make', found " + found(peek()));
-      return false;
-    }
-    ok = word("nb_of", "after the list of 'make'");
-    if (ok) operand("after 'nb_of'");
+    if (!parse_make_list(w, then, list)) return false;
+    ok = word(then, "after the list of '" + w + "'");
+    if (ok) operand("after '" + std::string(then) + "'");
     s.operands.insert(s.operands.end(), std::make_move_iterator(list.begin()),
                       std::make_move_iterator(list.end()));
-  } else if (w == "erase") {
-    if (flag_then("from")) {
-      take();
-      s.edit = edit_kind::erase_flag;
-    } else {
-      s.edit = edit_kind::erase;
-      operand("after 'erase'");
-    }
-    ok = word("from", "in 'erase ... from ...'");
-    if (ok) operand("after 'from'");
-  } else if (w == "replace") {
-    if (flag_then("with")) {
-      take();
-      s.edit = edit_kind::replace_flag;
-    } else {
-      s.edit = edit_kind::replace;
-      operand("after 'replace'");
-    }
-    ok = word("with", "in 'replace ... with ... in ...'");
-    if (ok) operand("after 'with'");
-    ok = ok && word("in", "in 'replace ... with ... in ...'");
-    if (ok) operand("after 'in'");
-  } else if (w == "splice") {
-    if (at("after") || at("before")) {
-      error(peek(), "expected a vertex after 'splice', found " + found(peek()));
+    if (!ok) return false;
+    s.end = expect(";", "at the end of '" + w + "'");
+    return s.end != nullptr;
+  }
+  // How messages name the form: 'replace ... with ... in ...'; a choice of
+  // two words is left out ('splice ... in ...').
+  std::string shape = "'" + w;
+  if (!then.empty() && or_then.empty()) shape += " ... " + std::string(then);
+  if (!form.last.empty()) shape += " ... " + std::string(form.last);
+  shape += " ...'";
+
+  if (form.flag_may_be != edit_form::first || !flag_before(then)) {
+    // A missing operand: a connective is no operand, but after or before
+    // would pass for a name.
+    if (!then.empty() && !has_role(then, word_role::connective) &&
+        (at(then) || (!or_then.empty() && at(or_then)))) {
+      error(peek(), "expected a vertex after '" + w + "', found " + found(peek()));
       return false;
     }
-    operand("after 'splice'");
-    bool after = at("after");
-    if (!after && !at("before")) {
-      error(peek(), "expected 'after' or 'before' in 'splice', found " + found(peek()));
-      return false;
-    }
-    take();
-    if (flag_then("in")) {
-      take();
-      s.edit = after ? edit_kind::splice_after_flag : edit_kind::splice_before_flag;
+    operand("after '" + w + "'");
+  }
+  if (!then.empty()) {
+    std::string taken(then);
+    if (!or_then.empty()) {
+      if (!at(then) && !at(or_then)) {
+        error(peek(), "expected '" + std::string(then) + "' or '" + std::string(or_then) + "' in '" + w +
+                          "', found " + found(peek()));
+        return false;
+      }
+      taken = std::string(take()->text);
+      if (taken == or_then) s.edit = form.or_kind;
     } else {
-      s.edit = after ? edit_kind::splice_after : edit_kind::splice_before;
-      operand(after ? "after 'after'" : "after 'before'");
+      ok = word(then, "in " + shape);
     }
-    ok = word("in", "in 'splice ... in ...'");
-    if (ok) operand("after 'in'");
-  } else if (w == "flag" || w == "add" || w == "remove" || w == "merge") {
-    s.edit = w == "flag" ? edit_kind::flag : w == "add" ? edit_kind::add
-             : w == "remove" ? edit_kind::remove : edit_kind::merge;
-    std::string_view next = find_word(w, word_role::edit)->then;
-    operand("after '" + w + "'");
-    ok = word(next, "in '" + w + " ... " + std::string(next) + " ...'");
-    if (ok) operand("after '" + std::string(next) + "'");
-  } else {
-    s.edit = w == "clear" ? edit_kind::clear : edit_kind::synchronise;
-    operand("after '" + w + "'");
+    if (ok && (form.flag_may_be != edit_form::second || !flag_before(form.last))) operand("after '" + taken + "'");
+  }
+  if (!form.last.empty()) {
+    ok = ok && word(form.last, "in " + shape);
+    if (ok) operand("after '" + std::string(form.last) + "'");
   }
   if (!ok) return false;
   s.end = expect(";", "at the end of '" + w + "'");
   return s.end != nullptr;
+}
+
+// make-list = "{" balanced {"," balanced} "}"   (each balanced up to "," or `then`)
+bool parser::parse_make_list(const std::string& w, std::string_view then, std::vector<pieces>& list) {
+  if (!at("{")) {
+    error(peek(), "expected '{' to start the list of '" + w + "', found " + found(peek()));
+    return false;
+  }
+  const token* open = take();
+  while (!at("}") && !at_end()) {
+    list.push_back(parse_balanced({",", then, ";"}, mode::expression));
+    if (list.back().empty()) error(peek(), "expected a vertex in the list of '" + w + "'");
+    if (!accept(",")) break;
+  }
+  if (!accept("}")) {
+    error(at_end() ? *open : peek(), "expected '}' to end the list of '" + w + "', found " + found(peek()));
+    return false;
+  }
+  return true;
 }
 
 // forall = "forall" name "in" operand statement
@@ -277,9 +287,11 @@ stmt_ptr parser::parse_forall() {
 
 // vertex-declaration = "vertex" declarator {"," declarator} ";"
 // declarator = name                      (creates a vertex)
-//            | name "(" [balanced {"," balanced}] ")" | name "{" ... "}"   (with properties)
-//            | name "=" balanced              (a reference)
-//            | name "[" ... balanced          (an array of null handles, as in C++)
+//            | name "(" [balanced {"," balanced}] ")"    (with properties)
+//            | name "{" [balanced {"," balanced}] "}"
+//            | name "=" balanced                          (a reference)
+//            | name balanced                             (starting at "[": an array of null handles)
+// each balanced up to "," (or ";")
 bool parser::parse_vertex_declaration(stmt& s) {
   take();  // vertex
   while (true) {

@@ -4,7 +4,7 @@
 
 namespace vvc {
 
-// program = { preprocessor-line | property-block | execution-block | declaration }
+// program = { preprocessor-line | property-block | execution-block | parameter | declaration }
 program parser::parse_program() {
   program p;
   while (!at_end() && !diag_.saturated()) {
@@ -23,6 +23,8 @@ program parser::parse_program() {
     } else if (t.is(")") || t.is("]") || t.is("}")) {
       error(t, "unmatched '" + std::string(t.text) + "'");
       take();
+    } else if (misspelt_block_word_at_top_level()) {
+      // `stpe { ... }`: reported, and read as the block it was meant to be
     } else {
       parse_top_declaration(p);
     }
@@ -136,7 +138,7 @@ void parser::parse_parameter(program& p) {
   p.items.push_back(std::move(item));
 }
 
-// declaration = balanced (";" | ending in a function or namespace body)
+// declaration = balanced ";" | balanced ending in a function or namespace body
 void parser::parse_top_declaration(program& p) {
   std::size_t start = pos_;
   const token& first = peek();

@@ -26,7 +26,9 @@ bool parser::starts_operand(const token& t) const {
   }
 }
 
-// vv-expression = "`" ... | path | query
+// vv-expression = old-state | path | query
+// (next/prev only before "(" balanced ")" "to", any/flagged only before
+// "in", is only before an operand and "in")
 bool parser::parse_vv_expression(pieces& out) {
   const token& t = peek();
   if (t.kind == tok::backtick) {
@@ -113,9 +115,10 @@ piece parser::parse_query() {
   return p;
 }
 
-// operand = prefix-op operand | vv-expression postfix* | "(" balanced ")" postfix*
-//         | primary postfix*
-// primary = ["::"] name {"::" name} [template-arguments] | literal {literal}
+// operand = prefix-op operand | query | (old-state | path) postfix*
+//         | "(" balanced ")" postfix* | ["::"] name postfix*
+//         | (number | character) postfix* | string {string}
+// (qualified names and template arguments are postfixes: a::b<int>(x))
 pieces parser::parse_operand(const std::string& context) {
   pieces out;
   nesting_guard guard(*this);
@@ -159,8 +162,8 @@ pieces parser::parse_operand(const std::string& context) {
   return out;
 }
 
-// postfix = "(" balanced ")" | "[" balanced "]" | ("." | "->" | "::") name
-//         | "$" name | "++" | "--" | template-arguments "(" balanced ")"
+// postfix = "(" balanced ")" | "[" balanced "]" | ("." | "->" | "::") ["template"] ["~"] name
+//         | "$" name (when allow_property) | "++" | "--" | template-arguments (after a name)
 void parser::parse_postfix(pieces& out, bool allow_property) {
   while (!at_end()) {
     const token& t = peek();
@@ -226,7 +229,7 @@ bool parser::parse_template_arguments(pieces& out) {
   return true;
 }
 
-// old-state = "`" ( "`" old-state | path | "(" balanced ")" postfix* | primary postfix* )
+// old-state = "`" ( "`" old-state | path | "(" balanced ")" postfix* | ["::"] name postfix* )
 // with postfix not taking "$": `v$pos is (`v)$pos.
 piece parser::parse_old_state() {
   nesting_guard guard(*this);
@@ -261,7 +264,7 @@ piece parser::parse_old_state() {
   return p;
 }
 
-// path = "@" ["&"] "(" balanced "," balanced ")" { ("next" | "prev" | "swap") [","] } "@"
+// path = "@" ["&"] "(" balanced "," balanced ")" { "next" | "prev" | "swap" | "," } "@"
 piece parser::parse_path() {
   piece p;
   p.kind = piece_kind::path;

@@ -8,7 +8,25 @@
 
 namespace vvc {
 
-source_file::source_file(std::string p, std::string t) : path(std::move(p)), text(std::move(t)) {
+namespace {
+
+// CR LF (DOS) and a lone CR (old Mac) end a line as LF does, for GCC as for
+// us: they become LF, so that every line count, #line directive and
+// diagnostic agrees with the compiler's.
+std::string with_lf_line_ends(std::string text) {
+  if (text.find('\r') == std::string::npos) return text;
+  std::string out;
+  out.reserve(text.size());
+  for (std::size_t i = 0; i < text.size(); ++i) {
+    if (text[i] != '\r') out += text[i];
+    else if (i + 1 == text.size() || text[i + 1] != '\n') out += '\n';
+  }
+  return out;
+}
+
+}  // namespace
+
+source_file::source_file(std::string p, std::string t) : path(std::move(p)), text(with_lf_line_ends(std::move(t))) {
   line_starts.push_back(0);
   for (std::size_t i = 0; i < text.size(); ++i)
     if (text[i] == '\n') line_starts.push_back(i + 1);
@@ -19,7 +37,6 @@ std::string_view source_file::line(int n) const {
   std::size_t begin = line_starts[static_cast<std::size_t>(n - 1)];
   std::size_t end = text.find('\n', begin);
   if (end == std::string::npos) end = text.size();
-  if (end > begin && text[end - 1] == '\r') --end;
   return std::string_view(text).substr(begin, end - begin);
 }
 

@@ -11,7 +11,7 @@ namespace vvc {
 
 struct source_file {
   std::string path;
-  std::string text;
+  std::string text;  // with LF line ends: CR LF and a lone CR became LF
   std::vector<std::size_t> line_starts;  // offset of each line's first byte
 
   source_file(std::string p, std::string t);

@@ -57,6 +57,10 @@ void writer::token(const vvc::token& t) {
   sync(t);
   separate(t.text, t.space_before);
   out_ += t.text;
+  // A string continued with a backslash, or a raw string, spans lines: the
+  // next token's line is counted from the line this one ends on.
+  for (char c : t.text)
+    if (c == '\n') ++line_;
 }
 
 void writer::text(std::string_view s) {

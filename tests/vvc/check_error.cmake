@@ -3,9 +3,20 @@
 # includes `// expect-in: PATH:LINE:COL: error: MESSAGE` with PATH relative
 # to INPUT's folder), exit status 1, print the source line and a caret, and
 # leave no OUTPUT (not even a stale one).
+# With LINE_ENDS=CR or CRLF, a copy of INPUT with those line ends (beside
+# OUTPUT) is translated instead: the diagnostic must be the same.
 # Text is handled as strings, never as CMake lists (messages contain ';').
 file(READ ${INPUT} source)
-string(REGEX MATCH "^// expect(-in)?: ([^\n]*)" first "${source}")
+if(DEFINED LINE_ENDS)
+  string(REPLACE "CR" "\r" ending "${LINE_ENDS}")
+  string(REPLACE "LF" "\n" ending "${ending}")
+  string(REPLACE "\n" "${ending}" source "${source}")
+  get_filename_component(name ${INPUT} NAME)
+  get_filename_component(dir ${OUTPUT} DIRECTORY)
+  set(INPUT ${dir}/${LINE_ENDS}/${name})
+  file(WRITE ${INPUT} "${source}")
+endif()
+string(REGEX MATCH "^// expect(-in)?: ([^\r\n]*)" first "${source}")
 if(NOT first)
   message(FATAL_ERROR "${INPUT}: the first line must be '// expect: LINE:COL: error: MESSAGE'")
 endif()

@@ -127,3 +127,28 @@ TEST(Lexer, Errors) {
     EXPECT_EQ(l.diag.list()[0].message, c.message) << c.text;
   }
 }
+
+// Old Mac files end lines in a lone CR, DOS files in CR LF: each is a line
+// end, as for GCC, also inside comments, continuations and raw strings.
+TEST(Lexer, CrCrLfAndLfAllEndLines) {
+  const std::string lf =
+      "a\n/* two\nlines */ b\n#define M \\\n  1\nc // a comment \\\ncontinued\nd R\"(x\ny)\" e\n\nf \"g\\\nh\" i";
+  for (std::string end : {"\r", "\r\n"}) {
+    std::string text;
+    for (char c : lf) text += c == '\n' ? end : std::string(1, c);
+    auto expected = lex(lf);
+    auto got = lex(text);
+    ASSERT_FALSE(got.diag.any()) << vvc::format(got.diag.list()[0]);
+    ASSERT_EQ(got.tokens.size(), expected.tokens.size());
+    for (std::size_t i = 0; i < got.tokens.size(); ++i) {
+      EXPECT_EQ(got.tokens[i].line, expected.tokens[i].line) << "token " << i << " " << got.tokens[i].text;
+      EXPECT_EQ(got.tokens[i].col, expected.tokens[i].col) << "token " << i;
+      EXPECT_EQ(got.tokens[i].text, expected.tokens[i].text) << "token " << i;
+    }
+  }
+  auto l = lex("a\rb\r\nc\n\rd");
+  ASSERT_EQ(l.tokens.size(), 5u);
+  EXPECT_EQ(l.tokens[1].line, 2);
+  EXPECT_EQ(l.tokens[2].line, 3);
+  EXPECT_EQ(l.tokens[3].line, 5);
+}

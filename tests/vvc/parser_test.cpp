@@ -8,6 +8,7 @@
 #include <cctype>
 #include <string>
 
+#include "spelling.hpp"
 #include "translate.hpp"
 
 namespace {
@@ -150,6 +151,20 @@ TEST(Translation, LineDirectivesFollowTheSource) {
   EXPECT_NE(t.cpp.find("#line 13 \"dir/m.vvp\"\nint b;"), std::string::npos) << t.cpp;
 }
 
+// A string continued over two lines, or a raw string, is one token of
+// several lines: the lines after it keep their numbers.
+TEST(Translation, LinesAfterATokenOfSeveralLinesKeepTheirNumbers) {
+  vvc::translation t =
+      vvc::translate_text("m.vvp", "const char* s = \"a\\\nb\";\nconst char* r = R\"(c\nd)\";\nint x;\n");
+  ASSERT_TRUE(t.ok);
+  std::size_t at = t.cpp.find("int x;");
+  ASSERT_NE(at, std::string::npos) << t.cpp;
+  std::size_t directive = t.cpp.rfind("#line 1 \"m.vvp\"\n", at);
+  ASSERT_NE(directive, std::string::npos) << t.cpp;
+  EXPECT_EQ(std::count(t.cpp.begin() + static_cast<long>(directive), t.cpp.begin() + static_cast<long>(at), '\n'), 5)
+      << t.cpp;  // "int x;" on line 5: the directive's own newline and four more
+}
+
 TEST(Translation, GlobalMeshesAreListedForTheHost) {
   vvc::translation t = vvc::translate_text("t.vvp", "mesh S, T;\nstatic mesh U;\nmesh f();\n");
   ASSERT_TRUE(t.ok);
@@ -178,6 +193,38 @@ TEST(Diagnostics, FormatHasFileLineColumnSourceLineAndCaret) {
             "t.vvp:2:15: error: expected 'in' after the operand of 'nextto', found 'b'\n"
             "  \tx = nextto a b;\n"
             "  \t             ^\n");
+}
+
+// A long line is cut around the caret: 200 characters at most, "..." at
+// each cut, the caret under the same character, no UTF-8 character split.
+TEST(Diagnostics, ALongLineIsCutAroundTheCaret) {
+  std::string before, after;
+  for (int i = 0; i < 1000; ++i) before += "\xC3\xA9", after += "\xC3\xA9";  // é
+  vvc::translation t = failed("void f() {\n\tx = g(\"" + before + "\") + nextto a b+ g(\"" + after + "\");\n}\n");
+  ASSERT_FALSE(t.diag.list().empty());
+  std::string text = vvc::format(t.diag.list()[0]);
+  std::size_t l1 = text.find('\n'), l2 = text.find('\n', l1 + 1);
+  std::string shown = text.substr(l1 + 3, l2 - l1 - 3), caret = text.substr(l2 + 3);
+  ASSERT_EQ(shown.compare(0, 3, "..."), 0) << shown;
+  ASSERT_EQ(shown.compare(shown.size() - 3, 3, "..."), 0) << shown;
+  auto characters = [](const std::string& s) {
+    return std::count_if(s.begin(), s.end(), [](char c) { return (static_cast<unsigned char>(c) & 0xC0) != 0x80; });
+  };
+  EXPECT_EQ(characters(shown), 206);  // 200 and the two marks
+  EXPECT_EQ(caret.find_first_not_of(' '), caret.size() - 2) << caret;  // spaces, then "^\n"
+  // The caret's column in the shown line is the 'b' the message names.
+  std::size_t column = caret.size() - 2, byte = 0;
+  for (std::size_t c = 0; byte < shown.size(); ++byte) {
+    if ((static_cast<unsigned char>(shown[byte]) & 0xC0) == 0x80) continue;
+    if (c++ == column) break;
+  }
+  EXPECT_EQ(shown.substr(byte, 2), "b+") << shown << "\n" << caret;
+  // A short line is shown whole.
+  vvc::translation s = failed("void f() {\n  x = nextto a b;\n}\n");
+  EXPECT_EQ(vvc::format(s.diag.list()[0]),
+            "t.vvp:2:16: error: expected 'in' after the operand of 'nextto', found 'b'\n"
+            "    x = nextto a b;\n"
+            "                 ^\n");
 }
 
 TEST(Diagnostics, EmptyDeclaratorInAPropertyBlockIsReported) {
@@ -211,5 +258,92 @@ TEST(Nesting, DeepPathsQueriesAndParenthesesAreOneClearError) {
     EXPECT_NE(vvc::format(t.diag.list()[0]).find("error: nested too deeply (more than 256 levels)"),
               std::string::npos)
         << vvc::format(t.diag.list()[0]);
+  }
+}
+
+TEST(Spelling, EditDistanceCountsASwapOfNeighboursAsOneEdit) {
+  EXPECT_EQ(vvc::edit_distance("nexto", "nextto", 2), 1u);
+  EXPECT_EQ(vvc::edit_distance("prevot", "prevto", 2), 1u);  // Levenshtein would say 2
+  EXPECT_EQ(vvc::edit_distance("valance", "valence", 2), 1u);
+  EXPECT_EQ(vvc::edit_distance("synchronis", "synchronise", 2), 1u);
+  EXPECT_EQ(vvc::edit_distance("rplce", "replace", 2), 2u);
+  EXPECT_EQ(vvc::edit_distance("ab", "ba", 2), 1u);
+  EXPECT_EQ(vvc::edit_distance("", "ab", 2), 2u);
+  EXPECT_EQ(vvc::edit_distance("abc", "xyz", 2), 3u);  // beyond the limit: limit + 1
+  EXPECT_EQ(vvc::edit_distance("a", "abcdef", 2), 3u);
+}
+
+// Each misspelling is reported once, at the name, with the word meant.
+TEST(Spelling, AMisspeltVvWordIsNamedWithTheWordMeant) {
+  const std::string head = "vertex { double c; };\nmesh M;\n";
+  struct {
+    std::string code;
+    int line, col;
+    std::string message;
+  } cases[] = {
+      {"vertex f(vertex v, vertex u) { return nexto u in v; }", 3, 39, "unknown word 'nexto'; did you mean 'nextto'?"},
+      {"vertex f(vertex v, vertex u) { return Nextto u in v; }", 3, 39, "unknown word 'Nextto'; did you mean 'nextto'?"},
+      {"vertex f(vertex v, vertex u) { return nxt(2) to u in v; }", 3, 39, "unknown word 'nxt'; did you mean 'next'?"},
+      {"vertex f(vertex v) { return ani in v; }", 3, 29, "unknown word 'ani'; did you mean 'any'?"},
+      {"vertex f(vertex v) { return flaged in v; }", 3, 29, "unknown word 'flaged'; did you mean 'flagged'?"},
+      {"bool f(vertex v, vertex u) { return iss u in v; }", 3, 37, "unknown word 'iss'; did you mean 'is'?"},
+      {"unsigned f(vertex v) { return lableof v; }", 3, 31, "unknown word 'lableof'; did you mean 'labelof'?"},
+      {"unsigned f(vertex v) { unsigned n = 0; n += valance `v; return n; }", 3, 45,
+       "unknown word 'valance'; did you mean 'valence'?"},
+      {"void f(vertex v, vertex a, vertex b) { mak {a, b} nb_of v; }", 3, 40, "unknown word 'mak'; did you mean 'make'?"},
+      {"void f(vertex v, vertex a, vertex b) { splce a after b in v; }", 3, 40,
+       "unknown word 'splce'; did you mean 'splice'?"},
+      {"void f(vertex v, vertex a, vertex b) { splice a befor b in v; }", 3, 49,
+       "expected 'after' or 'before' in 'splice', found 'befor'"},
+      {"void f(vertex v, vertex a) { flg a in v; }", 3, 30, "unknown word 'flg'; did you mean 'flag'?"},
+      {"void f(vertex a) { ad a to M; }", 3, 20, "unknown word 'ad'; did you mean 'add'?"},
+      {"void f(vertex a) { remov a from M; }", 3, 20, "unknown word 'remov'; did you mean 'remove'?"},
+      {"void f(mesh& N) { merg M with N; }", 3, 19, "unknown word 'merg'; did you mean 'merge'?"},
+      {"void f() { clera M; }", 3, 12, "unknown word 'clera'; did you mean 'clear'?"},
+      {"void f() { synchronse M; }", 3, 12, "unknown word 'synchronse'; did you mean 'synchronise'?"},
+      {"step { foral v in M { v$c = 1; } }", 3, 8, "unknown word 'foral'; did you mean 'forall'?"},
+      {"stpe { forall v in M v$c = 1; }", 3, 1, "unknown word 'stpe'; did you mean 'step'?"},
+      {"rendr { }", 3, 1, "unknown word 'rendr'; did you mean 'render'?"},
+      {"strat { }", 3, 1, "unknown word 'strat'; did you mean 'start'?"},
+  };
+  for (const auto& c : cases) {
+    vvc::translation t = failed(head + c.code + "\n");
+    ASSERT_EQ(t.diag.count(), 1u) << c.code << "\n" << (t.diag.any() ? vvc::format(t.diag.list()[0]) : "");
+    const vvc::diagnostic& d = t.diag.list()[0];
+    EXPECT_EQ(d.message, c.message) << c.code;
+    EXPECT_EQ(d.line, c.line) << c.code;
+    EXPECT_EQ(d.col, c.col) << c.code;
+  }
+}
+
+// A name a letter or two from a vv word, where C++ may use a name: never
+// taken for a misspelling (near_vv_words.vvp compiles and runs such names).
+TEST(Spelling, NamesThatCxxMayUseAreNeverTaken) {
+  const char* programs[] = {
+      "struct Flag { int x; };\nvoid f() { Flag in; in.x = 1; Flag to, from; to = from; }\n",
+      "int f() { int valance = 3; int y = valance; return y + valance * 2 - valance; }\n",
+      "double valance(int); int f(int v) { int n = valance(v); return n + valance (v); }\n",
+      "void eras(int); void f(int x) { eras(x); eras (x); }\n",
+      "struct eras {}; void f() { eras x; (void)x; }\n",
+      "int nexto = 1; int f() { nexto = nexto + 1; return -nexto * nexto; }\n",
+      "struct S { int nexto(int); }; int f(S s) { return s.nexto(2); }\n",
+      "template <class valance, valance v> struct S {};\nvoid g(valance v);\n",
+      "int stpe = 3;\nint strat{4};\n",
+      "void f() { const char* s = \"nexto u in v\"; (void)s; } // nexto u in v\n",
+      "struct lableof {}; lableof f(lableof a) { return a; }\n",
+      "struct Node { int x; }; void f() { Node * from = nullptr; Node& to = *from; (void)to; }\n",
+      "enum Flag { from, to }; Flag f() { Flag x = from; return x; }\n",
+      "struct Nexto { Nexto(int); }; void f(int u) { auto p = new Nexto(u); (void)p; }\n",
+      // `in` ends a parameter's value: iss(1) is a call there
+      "double iss(double);\nparam double x = iss(1) in [0, 3];\n",
+      // `clera M;` declares M, when clera may be a type: of a header of the
+      // program's own, or the program's (M declared nowhere as a mesh)
+      "#include \"own.hpp\"\nmesh M;\nvoid f() { clera M; }\n",
+      "void f() { clera M; }\n",
+      "struct clera {}; mesh M;\nvoid f() { clera M; }\n",
+  };
+  for (const char* p : programs) {
+    vvc::translation t = vvc::translate_text("t.vvp", p);
+    EXPECT_TRUE(t.ok) << p << "\n" << (t.diag.any() ? vvc::format(t.diag.list()[0]) : "");
   }
 }

@@ -46,7 +46,21 @@ class vertex {
   }
   ~vertex() { drop(); }
 
+  //! A vertex converts to bool, the non-null test: in conditions and
+  //! `static_cast<bool>` through this operator, and implicitly (`return v;`
+  //! in a function returning bool, `bool b = v;`, a bool argument) through
+  //! the one below. An implicit `operator bool` would also make `v + 1`,
+  //! `int i = v` and `v * 2` compile; a pointer to a member converts to
+  //! bool and to nothing arithmetic, so those stay errors.
   explicit operator bool() const noexcept { return id_ != 0; }
+ private:
+  struct bool_tag {
+    int non_null;
+  };
+  using safe_bool = int bool_tag::*;
+
+ public:
+  operator safe_bool() const noexcept { return id_ ? &bool_tag::non_null : nullptr; }
   //! The label (creation order, 0 for null).
   unsigned label() const noexcept { return id_ ? ctx_->label(id_) : 0u; }
 
@@ -74,6 +88,12 @@ class vertex {
     return a.id_ == b.id_ && (a.id_ == 0 || a.ctx_ == b.ctx_);
   }
   friend bool operator!=(const vertex& a, const vertex& b) noexcept { return !(a == b); }
+  // `v == 0`: without these, the comparison of pointers to members (through
+  // the conversion above) would be as good a match as vertex(nullptr).
+  friend bool operator==(const vertex& a, std::nullptr_t) noexcept { return !a.id_; }
+  friend bool operator==(std::nullptr_t, const vertex& a) noexcept { return !a.id_; }
+  friend bool operator!=(const vertex& a, std::nullptr_t) noexcept { return a.id_ != 0; }
+  friend bool operator!=(std::nullptr_t, const vertex& a) noexcept { return a.id_ != 0; }
   friend bool operator<(const vertex& a, const vertex& b) noexcept { return a.label() < b.label(); }
   friend bool operator>(const vertex& a, const vertex& b) noexcept { return b < a; }
   friend bool operator<=(const vertex& a, const vertex& b) noexcept { return !(b < a); }
