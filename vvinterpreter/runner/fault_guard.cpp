@@ -1,5 +1,6 @@
 #include "runner/fault_guard.hpp"
 
+#include <cxxabi.h>
 #include <execinfo.h>
 #include <fcntl.h>
 #include <signal.h>
@@ -11,6 +12,7 @@
 #include <cstdlib>
 #include <cstring>
 #include <exception>
+#include <typeinfo>
 
 namespace vvi::fault_guard {
 
@@ -147,8 +149,18 @@ void on_terminate() {
       std::rethrow_exception(e);
     } catch (const std::exception& x) {
       std::snprintf(exception_text, sizeof exception_text, "%s", x.what());
+    } catch (const std::string& text) {
+      std::snprintf(exception_text, sizeof exception_text, "an exception of type std::string: %s", text.c_str());
+    } catch (const char* text) {
+      std::snprintf(exception_text, sizeof exception_text, "an exception of type const char*: %s",
+                    text ? text : "(null)");
     } catch (...) {
-      std::snprintf(exception_text, sizeof exception_text, "an exception that is not a std::exception");
+      const std::type_info* type = abi::__cxa_current_exception_type();
+      int status = 0;
+      char* name = type ? abi::__cxa_demangle(type->name(), nullptr, nullptr, &status) : nullptr;
+      std::snprintf(exception_text, sizeof exception_text, "an exception of type %s",
+                    name ? name : type ? type->name() : "unknown");
+      std::free(name);
     }
   } else {
     std::snprintf(exception_text, sizeof exception_text, "std::terminate was called");

@@ -5,8 +5,8 @@
 #include <fstream>
 
 #include "runner/crash_report.hpp"
-
 #include "runner/fault_guard.hpp"
+#include "runner/throw_points.hpp"
 
 namespace vvi {
 
@@ -50,7 +50,9 @@ bool session::run(const char* block, plugin::block_fn fn, unsigned step, bool an
   // close are still announced (a step without a step block still counts).
   if (!fn && !announce) return true;
   fault_guard::begin(block, step, announce);
+  throw_points::keep(true);
   const char* e = fn ? fn() : nullptr;
+  throw_points::keep(false);
   fault_guard::finish(announce);
   if (e) {
     error_ = locate(e);
