@@ -63,13 +63,16 @@ TEST(Lifecycle, ACrashNamesTheLineAndTheStepAndKeepsTheOutput) {
 }
 
 // Regression (defect 4): an endless step froze everything; now
-// --step-timeout ends it with a message naming the step.
+// --step-timeout ends it with a message naming the step and the line it
+// was at, with the model's stack as a crash report gives it.
 TEST(Lifecycle, AStepPastTheTimeLimitEndsTheRun) {
   test_run::result r =
       batch({"--quiet", "--steps", "3", "--step-timeout", "1.5", fault_models + "endless_step2.vvp"});
   ASSERT_FALSE(r.timed_out) << "the endless step was not ended\n" << report(r);
   EXPECT_NE(r.status, 0) << report(r);
-  EXPECT_EQ(r.err, "vvinterpreter: " + fault_models + "endless_step2.vvp: step 2 ran longer than 1.5 s\n")
+  const std::string model = fault_models + "endless_step2.vvp";
+  EXPECT_EQ(r.err, "vvinterpreter: " + model + ":22: step 2 ran longer than 1.5 s and was ended\n  " + model +
+                       ":22 in the step block\n")
       << report(r);
 }
 

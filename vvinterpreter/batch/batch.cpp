@@ -62,6 +62,7 @@ std::string screenshot(const options& o, model_runner& runner) {
   std::unique_ptr<offscreen> gl = offscreen::create(o.width, o.height, error);
   if (!gl) return error;
   session* model = runner.model();
+  if (model) model->announce_drawing(true);  // its render blocks are supervised like the others
   if (!init_rendering(model, error)) return error;
   mesh_drawing drawing;  // drawn unless the model draws itself; its bounds fit the view
   vv_geometry g{};
@@ -151,6 +152,17 @@ void remove_temporaries(const options& o) {
     if (!target.empty()) std::remove(vv::io::temporary_for(target).c_str());
 }
 
+// While a block runs long, where it is (the supervisor asks the model).
+void tell_long_activity(const options& o, const long_activity& a) {
+  std::fprintf(stderr, "vvinterpreter: %s\n", describe_long_activity(a, o.model, o.step_timeout).c_str());
+  std::fflush(stderr);
+}
+
+int report_end(const crash_text& t) {
+  std::fprintf(stderr, "vvinterpreter: %s\n%s", t.line.c_str(), t.stack.c_str());
+  return 1;
+}
+
 }  // namespace
 
 int run_compile_only(const options& o) {
@@ -175,6 +187,8 @@ int run_batch(const options& o) {
   remove_temporaries(o);
   supervision s;
   s.activity_timeout = o.step_timeout;
+  s.notice_after = seconds_from_environment("VV_NOTICE_AFTER", 10);
+  s.on_long_activity = [&](const long_activity& a) { tell_long_activity(o, a); };
   child_end end = run_supervised([&] { return run_model_headless(o); }, s);
   int status = end.exit_code;
   if (end.kind == child_end::interrupted) {
@@ -182,12 +196,12 @@ int run_batch(const options& o) {
     const char* name = sigabbrev_np(end.signal);
     fail(std::string("interrupted (SIG") + (name ? name : "?") + "); the files being written were removed");
     status = 128 + end.signal;
-  } else if (end.kind == child_end::timed_out) {
-    status = fail(describe_timeout(end, o.model, o.step_timeout));
-  } else if (end.kind == child_end::crashed) {
-    crash_text t = describe_crash(end, o.model);
-    std::fprintf(stderr, "vvinterpreter: %s\n%s", t.line.c_str(), t.stack.c_str());
-    status = 1;
+  } else if (end.kind == child_end::exited) {
+    // Inside a block the model ended the process itself: its steps and
+    // files are missing, whatever the status said.
+    if (!end.activity.what.empty()) status = report_end(describe_exit(end, o.model));
+  } else {
+    status = report_end(describe_crash(end, o.model));
   }
   remove_module_copies(end);
   return status;

@@ -4,9 +4,12 @@
 #include <execinfo.h>
 #include <fcntl.h>
 #include <signal.h>
+#include <sys/syscall.h>
+#include <time.h>
 #include <ucontext.h>
 #include <unistd.h>
 
+#include <cerrno>
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
@@ -22,9 +25,16 @@ namespace {
 int report = -1;
 char activity[32] = "";
 unsigned activity_step = 0;
+// The thread of the announced activity (0: none): the one a sample is of.
+volatile pid_t activity_thread = 0;
 char exception_text[512] = "";
 volatile sig_atomic_t handling = 0;
 char maps_buffer[1 << 18];
+char sample_maps_buffer[1 << 18];  // a sample may run while another thread crashes
+volatile sig_atomic_t samples_sent = 0;
+volatile sig_atomic_t last_sample = 0;
+
+pid_t thread_id() { return static_cast<pid_t>(syscall(SYS_gettid)); }
 
 constexpr int fatal_signals[] = {SIGSEGV, SIGBUS, SIGFPE, SIGILL, SIGABRT};
 
@@ -83,17 +93,17 @@ void flush_unlocked(FILE* f) {
   }
 }
 
-void send_maps() {
+template <std::size_t N>
+void send_maps(char (&buffer)[N]) {
   int fd = open("/proc/self/maps", O_RDONLY | O_CLOEXEC);
   if (fd < 0) return;
   std::size_t n = 0;
   ssize_t r;
-  while (n < sizeof maps_buffer - 1 && (r = read(fd, maps_buffer + n, sizeof maps_buffer - 1 - n)) > 0)
-    n += static_cast<std::size_t>(r);
+  while (n < N - 1 && (r = read(fd, buffer + n, N - 1 - n)) > 0) n += static_cast<std::size_t>(r);
   close(fd);
-  maps_buffer[n] = '\0';
+  buffer[n] = '\0';
   // Only mappings of files: the supervisor looks up code addresses.
-  for (char* at = maps_buffer; *at;) {
+  for (char* at = buffer; *at;) {
     char* eol = std::strchr(at, '\n');
     if (eol) *eol = '\0';
     if (std::strchr(at, '/')) {
@@ -102,6 +112,13 @@ void send_maps() {
     }
     at = eol ? eol + 1 : at + std::strlen(at);
   }
+}
+
+void send_frames() {
+  void* frames[64];
+  int n = backtrace(frames, 64);
+  line l;
+  for (int i = 0; i < n; ++i) (l << "frame ").number(reinterpret_cast<std::uintptr_t>(frames[i]), 16).send();
 }
 
 std::uintptr_t fault_pc(void* context) {
@@ -131,14 +148,58 @@ void on_fatal(int sig, siginfo_t*, void* context) {
     if (activity[0]) (l << "activity " << activity << " ").number(activity_step, 10).send();
     if (exception_text[0]) (l << "exception " << exception_text).send();
     (l << "pc ").number(fault_pc(context), 16).send();
-    void* frames[64];
-    int n = backtrace(frames, 64);
-    for (int i = 0; i < n; ++i) (l << "frame ").number(reinterpret_cast<std::uintptr_t>(frames[i]), 16).send();
-    send_maps();
+    send_frames();
+    send_maps(maps_buffer);
     (l << "end").send();
   }
   signal(sig, SIG_DFL);  // the signal is blocked here: it kills us on return
   raise(sig);
+}
+
+// The supervisor asks where the running block is (a long step, a time-out,
+// a stop). Any thread may receive the signal: it goes on to the one that
+// runs the announced activity, which reports its own stack and runs on.
+void on_sample(int sig, siginfo_t* info, void* context) {
+  int saved_errno = errno;
+  // The last sample before the supervisor ends the process: what the model
+  // printed is written out first, as on a crash.
+  if (info && info->si_code == SI_QUEUE && info->si_value.sival_int == last_sample_value) last_sample = 1;
+  pid_t target = activity_thread;
+  if (target != 0 && target != thread_id()) {
+    syscall(SYS_tgkill, getpid(), target, sig);
+  } else if (!handling && report >= 0) {
+    if (last_sample) {
+      flush_unlocked(stdout);
+      flush_unlocked(stderr);
+    }
+    line l;
+    (l << "sample " << (target ? "running" : "idle")).send();
+    if (target) {
+      (l << "pc ").number(fault_pc(context), 16).send();
+      send_frames();
+      send_maps(sample_maps_buffer);
+    }
+    (l << "end").send();
+    samples_sent = samples_sent + 1;
+    // The supervisor ends the process now: the model must not go on (and
+    // finish, or print) in the meantime.
+    if (last_sample)
+      for (;;) pause();
+  }
+  errno = saved_errno;
+}
+
+// exit() inside a block ends the run before its end: tell the supervisor
+// where it was called (_exit cannot be seen; the supervisor still knows the
+// block from the protocol).
+void on_exit_call() {
+  if (activity_thread == 0 || report < 0) return;
+  flush_unlocked(stdout);
+  line l;
+  (l << "sample exit").send();
+  send_frames();
+  send_maps(sample_maps_buffer);
+  (l << "end").send();
 }
 
 void on_terminate() {
@@ -204,24 +265,50 @@ void install(int report_fd) {
   sigemptyset(&sa.sa_mask);
   for (int sig : fatal_signals) sigaction(sig, &sa, nullptr);
   std::set_terminate(on_terminate);
+  if (report < 0) return;
+  struct sigaction sample {};
+  sample.sa_sigaction = on_sample;
+  sample.sa_flags = SA_SIGINFO | SA_ONSTACK | SA_RESTART;  // the model's system calls go on
+  sigemptyset(&sample.sa_mask);
+  sigaction(sample_signal(), &sample, nullptr);
+  std::atexit(on_exit_call);
+  std::at_quick_exit(on_exit_call);
 }
 
 void begin(const char* what, unsigned step, bool announce) {
   copy_text(activity, sizeof activity, what);
   activity_step = step;
   if (announce && report >= 0) {
+    activity_thread = thread_id();
     line l;
     (l << "begin " << what << " ").number(step, 10).send();
+    (l << "thread ").number(static_cast<unsigned long long>(activity_thread), 10).send();
   }
 }
 
 void finish(bool announce) {
   if (announce && report >= 0) {
+    activity_thread = 0;
     line l;
     (l << "done " << activity << " ").number(activity_step, 10).send();
   }
   activity[0] = '\0';
   activity_step = 0;
+}
+
+int sample_signal() { return SIGRTMIN + 3; }
+
+bool report_activity_stack(double max_seconds) {
+  pid_t target = activity_thread;
+  if (target == 0 || report < 0) return false;
+  sig_atomic_t before = samples_sent;
+  if (syscall(SYS_tgkill, getpid(), target, sample_signal()) != 0) return false;
+  const timespec pause{0, 1000000};
+  for (double waited = 0; waited < max_seconds; waited += 0.001) {
+    if (samples_sent != before) return true;
+    nanosleep(&pause, nullptr);
+  }
+  return samples_sent != before;
 }
 
 void note_module(const std::string& loaded, const std::string& original) {

@@ -6,7 +6,11 @@
 // happens next. Nothing here tries to recover in-process.
 //
 // The same pipe carries what the model is doing ("begin step 3"), so the
-// supervisor can time a step, and the modules loaded (to name their lines).
+// supervisor can time a step, the modules loaded (to name their lines), and,
+// when the
+// supervisor asks with sample_signal(), where the running block is: the
+// stack of the thread that runs it, without stopping it. A model that calls
+// exit() inside a block reports its stack the same way.
 #pragma once
 
 #include <string>
@@ -23,10 +27,23 @@ void prepare_thread();
 
 //! What the model is doing: "loading", "start", "step", "end", "render", ...
 //! (step: the step's number, 0 otherwise). announce: also tell the
-//! supervisor, which times announced activities (--step-timeout, Stop).
+//! supervisor, which times announced activities (--step-timeout, Stop) and
+//! may ask for their stack.
 void begin(const char* what, unsigned step = 0, bool announce = true);
 //! The activity ended normally.
 void finish(bool announce = true);
+
+//! The signal the supervisor sends to ask where the announced activity is:
+//! the thread that runs it answers with a "sample" report of its stack.
+//! Queued with the value last_sample_value (sigqueue), it is the last
+//! before the process is ended: what the model printed is flushed first.
+int sample_signal();
+constexpr int last_sample_value = 1;
+
+//! Sends the stack of the announced activity's thread to the supervisor
+//! now (from any thread of this process) and waits for it to be sent, at
+//! most max_seconds; false when nothing runs or no answer came.
+bool report_activity_stack(double max_seconds = 0.5);
 
 //! Tells the supervisor that `loaded` (as it appears in /proc/self/maps) is
 //! a copy of `original`, whose line tables name the .vvp lines.

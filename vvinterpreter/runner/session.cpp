@@ -82,10 +82,13 @@ bool session::end() {
   return run("end", plugin_->model().end);
 }
 bool session::reread() { return run("reread", plugin_->model().reread); }
-// Drawing is not timed (it is not announced): it runs every frame.
-bool session::render_init() { return run("render_init", plugin_->model().render_init, 0, false); }
-bool session::render() { return run("render", plugin_->model().render, 0, false); }
-bool session::render_screen() { return run("render_screen", plugin_->model().render_screen, 0, false); }
+// The viewer draws every frame: its drawing is not announced (the pipe
+// would carry 60 lines a second). Batch draws once, supervised like any block.
+bool session::render_init() { return run("render_init", plugin_->model().render_init, 0, announce_drawing_); }
+bool session::render() { return run("render", plugin_->model().render, 0, announce_drawing_); }
+bool session::render_screen() {
+  return run("render_screen", plugin_->model().render_screen, 0, announce_drawing_);
+}
 
 bool session::step() {
   proxy().plot_step = steps_ + 1;
