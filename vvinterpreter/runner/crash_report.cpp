@@ -195,9 +195,10 @@ std::string killer(const child_end& end) {
   return " (by another process, or by the kernel's out-of-memory killer: the system does not say)";
 }
 
-// " in step 2", or "".
+// "in step 2", or for a death between blocks, the file being written.
 std::string where_it_was(const child_end& end) {
   std::string activity = activity_phrase(end.activity);
+  if (activity.empty() && !end.writing.empty()) activity = "while writing " + end.writing.front().first;
   return activity.empty() ? "" : " " + activity;
 }
 

@@ -3,6 +3,7 @@
 #include <cxxabi.h>
 #include <execinfo.h>
 #include <fcntl.h>
+#include <limits.h>
 #include <signal.h>
 #include <sys/syscall.h>
 #include <time.h>
@@ -16,6 +17,8 @@
 #include <cstring>
 #include <exception>
 #include <typeinfo>
+
+#include <vv/io/files.hpp>
 
 namespace vvi::fault_guard {
 
@@ -33,6 +36,11 @@ char maps_buffer[1 << 18];
 char sample_maps_buffer[1 << 18];  // a sample may run while another thread crashes
 volatile sig_atomic_t samples_sent = 0;
 volatile sig_atomic_t last_sample = 0;
+
+// The temporaries being written, each with the one vvlib writes before
+// renaming it (vv::io::temporary_beside): unlinked on a termination signal.
+constexpr int max_writing = 4;
+char writing[max_writing][2][PATH_MAX];
 
 pid_t thread_id() { return static_cast<pid_t>(syscall(SYS_gettid)); }
 
@@ -202,6 +210,15 @@ void on_exit_call() {
   (l << "end").send();
 }
 
+// A termination signal (the supervisor went, Ctrl-C) ends the process as
+// it would have, without leaving a half-written file behind.
+void on_termination(int sig) {
+  for (auto& pair : writing)
+    if (pair[0][0]) unlink(pair[0]), unlink(pair[1]);
+  signal(sig, SIG_DFL);
+  raise(sig);
+}
+
 void on_terminate() {
   // Keep what the exception said; abort() then reports it with the stack,
   // which still holds the throw (nothing caught it, so nothing unwound).
@@ -271,6 +288,10 @@ void install(int report_fd) {
   sample.sa_flags = SA_SIGINFO | SA_ONSTACK | SA_RESTART;  // the model's system calls go on
   sigemptyset(&sample.sa_mask);
   sigaction(sample_signal(), &sample, nullptr);
+  struct sigaction term {};
+  term.sa_handler = on_termination;
+  sigemptyset(&term.sa_mask);
+  for (int sig : {SIGTERM, SIGINT, SIGHUP}) sigaction(sig, &term, nullptr);
   std::atexit(on_exit_call);
   std::at_quick_exit(on_exit_call);
 }
@@ -309,6 +330,27 @@ bool report_activity_stack(double max_seconds) {
     nanosleep(&pause, nullptr);
   }
   return samples_sent != before;
+}
+
+void note_writing(const std::string& temporary, const std::string& target) {
+  std::string inner = vv::io::temporary_beside(temporary);
+  for (auto& pair : writing)
+    if (!pair[0][0]) {
+      copy_text(pair[1], PATH_MAX, inner.c_str());
+      // The first byte last: a signal handler sees the whole path or none.
+      if (!temporary.empty() && temporary.size() < PATH_MAX) {
+        copy_text(pair[0] + 1, PATH_MAX - 1, temporary.c_str() + 1);
+        pair[0][0] = temporary[0];
+      }
+      break;
+    }
+  send("writing " + temporary + "\t" + target);
+}
+
+void note_written(const std::string& temporary) {
+  for (auto& pair : writing)
+    if (temporary == pair[0]) pair[0][0] = '\0';
+  send("written " + temporary);
 }
 
 void note_module(const std::string& loaded, const std::string& original) {

@@ -6,8 +6,8 @@
 // happens next. Nothing here tries to recover in-process.
 //
 // The same pipe carries what the model is doing ("begin step 3"), so the
-// supervisor can time a step, the modules loaded (to name their lines), and,
-// when the
+// supervisor can time a step, the modules loaded (to name their lines), the
+// files being written (removed if the process dies), and, when the
 // supervisor asks with sample_signal(), where the running block is: the
 // stack of the thread that runs it, without stopping it. A model that calls
 // exit() inside a block reports its stack the same way.
@@ -48,6 +48,12 @@ bool report_activity_stack(double max_seconds = 0.5);
 //! Tells the supervisor that `loaded` (as it appears in /proc/self/maps) is
 //! a copy of `original`, whose line tables name the .vvp lines.
 void note_module(const std::string& loaded, const std::string& original);
+
+//! A temporary file is being written for `target` (runner/output_file.hpp):
+//! if this process dies before note_written, the temporary goes (here on
+//! SIGTERM, SIGINT and SIGHUP; by the supervisor on anything else).
+void note_writing(const std::string& temporary, const std::string& target);
+void note_written(const std::string& temporary);
 
 //! Sends one line of free text to the supervisor (the viewer's state).
 void send(const std::string& line);

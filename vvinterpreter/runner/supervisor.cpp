@@ -19,6 +19,8 @@
 #include <optional>
 #include <string>
 
+#include <vv/io/files.hpp>
+
 #include "runner/fault_guard.hpp"
 #include "runner/oom_kills.hpp"
 
@@ -135,6 +137,12 @@ class report_reader {
     } else if (key == "module") {
       std::size_t tab = rest.find('\t');
       if (tab != std::string::npos) end_.modules[rest.substr(0, tab)] = rest.substr(tab + 1);
+    } else if (key == "writing") {
+      std::size_t tab = rest.find('\t');
+      if (tab != std::string::npos) end_.writing.emplace_back(rest.substr(tab + 1), rest.substr(0, tab));
+    } else if (key == "written") {
+      auto& w = end_.writing;
+      w.erase(std::remove_if(w.begin(), w.end(), [&](const auto& p) { return p.second == rest; }), w.end());
     } else if (key == "end") {
       if (filling_ == &end_.sample) sample_arrived = true;
       filling_ = nullptr;
@@ -414,6 +422,15 @@ class watch {
   double next_notice_ = 0, notice_seconds_ = 0;
 };
 
+// The temporaries of files the child did not finish: they are its own
+// (runner/output_file.hpp), named so no other run uses them.
+void remove_unfinished_files(const child_end& end) {
+  for (const auto& [target, temporary] : end.writing) {
+    unlink(temporary.c_str());
+    unlink(vv::io::temporary_beside(temporary).c_str());
+  }
+}
+
 }  // namespace
 
 double seconds_from_environment(const char* name, double fallback) {
@@ -454,6 +471,7 @@ child_end run_supervised(const std::function<int()>& child, const supervision& s
   close(fds[0]);
   long oom_after = oom_kill_count();
   if (oom_before >= 0 && oom_after >= 0) end.oom_kills = oom_after - oom_before;
+  remove_unfinished_files(end);
   return end;
 }
 

@@ -1,6 +1,6 @@
 // The process that stays up while a model's code runs in a child process.
 // It reads the child's report pipe (runner/fault_guard.hpp): what the model
-// is doing, the modules it loaded, free-form lines
+// is doing, the modules it loaded, the files it is writing, free-form lines
 // (the viewer's state), and the crash report if it dies. It ends an
 // activity that runs past its time limit, tells about one that runs long,
 // notices a child that was stopped (SIGSTOP, a terminal stop), and asks the
@@ -12,6 +12,7 @@
 #include <functional>
 #include <map>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace vvi {
@@ -51,6 +52,9 @@ struct child_end {
   child_activity activity; //!< at the end; not empty after `exited`: it exited inside a block
   double activity_seconds = 0;  //!< how long it had run (timed_out)
   double time_limit = 0;        //!< the limit it ran past (timed_out)
+  //! Files the child was writing when it ended (target → temporary); the
+  //! temporaries have been removed.
+  std::vector<std::pair<std::string, std::string>> writing;
   //! Kills by the kernel's out-of-memory killer while the child ran (-1:
   //! the system does not say).
   long oom_kills = -1;
