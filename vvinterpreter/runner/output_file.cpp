@@ -159,8 +159,12 @@ output_file::output_file(std::string path) : path_(std::move(path)) {
     struct stat st;
     if (lstat(at.c_str(), &st) != 0) break;  // a new file (or an error the writer reports)
     if (S_ISLNK(st.st_mode)) {
-      if (!seen.insert(at).second || seen.size() > 40) {
+      if (!seen.insert(at).second) {
         error_ = path_ + ": cannot write through the symbolic link: it is part of a loop of links";
+        return;
+      }
+      if (seen.size() > 40) {  // as the system counts them (ELOOP)
+        error_ = path_ + ": cannot write through the symbolic link: more than 40 links lead on from it";
         return;
       }
       char link[PATH_MAX];
@@ -213,18 +217,27 @@ std::string output_file::commit() {
     fault_guard::note_written(temporary_);
     return "";
   }
-  std::string why;
-  std::optional<std::string> bytes = vv::io::read_file(temporary_, &why);
-  if (!bytes) return path_ + ": cannot write it: cannot read back the temporary " + temporary_ + ": " + why;
-  int fd = open_stream(target_);
-  if (fd < 0) {
+  int from = open(temporary_.c_str(), O_RDONLY | O_CLOEXEC);
+  if (from < 0) return path_ + ": cannot write it: cannot read back " + temporary_ + ": " + std::strerror(errno);
+  int to = open_stream(target_);
+  if (to < 0) {
     int e = errno;
+    close(from);
     if (e == ENXIO) return path_ + ": cannot write to the FIFO: no process opened it for reading";
     return path_ + ": cannot write file: " + std::strerror(e);
   }
-  fcntl(fd, F_SETFL, fcntl(fd, F_GETFL) & ~O_NONBLOCK);
-  int e = write_all(fd, bytes->data(), bytes->size());
-  if (close(fd) != 0 && e == 0) e = errno;
+  fcntl(to, F_SETFL, fcntl(to, F_GETFL) & ~O_NONBLOCK);
+  int e = 0;
+  char buffer[1 << 16];
+  for (ssize_t n; e == 0 && (n = read(from, buffer, sizeof buffer)) != 0;) {
+    if (n < 0) {
+      if (errno != EINTR) e = errno;
+      continue;
+    }
+    e = write_all(to, buffer, static_cast<std::size_t>(n));
+  }
+  close(from);
+  if (close(to) != 0 && e == 0) e = errno;
   if (e != 0) return path_ + ": cannot write file: " + std::strerror(e);
   return "";  // the temporary goes with this object
 }

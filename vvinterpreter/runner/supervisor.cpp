@@ -187,8 +187,9 @@ bool safe_to_sample(pid_t pid, pid_t thread) {
   return paren != std::string::npos && paren + 2 < text.size() && text[paren + 2] == 'R';
 }
 
-// How long the child may take to answer a request for its stack.
-constexpr double sample_wait_seconds = 1.0;
+// How long the child may take to answer a request for its stack (it takes
+// milliseconds; a loaded machine may hold it up).
+constexpr double sample_wait_seconds = 2.0;
 // How long a stopped child is left stopped before it counts as stuck: a
 // terminal's stop (Ctrl+Z) stops this process too, a moment later.
 constexpr double stop_grace_seconds = 0.3;
@@ -252,7 +253,7 @@ class watch {
     if (sampling_for_notice_) {
       if (reader_.sample_arrived || seconds_between(sample_asked_, now) >= sample_wait_seconds) {
         sampling_for_notice_ = false;
-        tell_long_activity(now);
+        tell_long_activity();
       } else {
         due_in(sample_wait_seconds - seconds_between(sample_asked_, now));
       }
@@ -280,7 +281,7 @@ class watch {
           sampling_for_notice_ = true;
           due_in(sample_wait_seconds);
         } else {
-          tell_long_activity(now, true);
+          tell_long_activity(true);
         }
       } else {
         due_in(next_notice_ - busy);
@@ -317,7 +318,8 @@ class watch {
     sigqueue(pid_, fault_guard::sample_signal(), value);
   }
 
-  void tell_long_activity(clock_type::time_point, bool waiting = false) {
+  // waiting: it was not asked where it is (safe_to_sample).
+  void tell_long_activity(bool waiting = false) {
     long_activity a;
     a.activity = end_.activity;
     a.seconds = notice_seconds_;

@@ -10,7 +10,9 @@ namespace vvi::throw_points {
 
 namespace {
 
-constexpr int max_frames = 48;
+// Enough to reach the model's innermost frame (the throw, the C++
+// library's __throw_* helper, a few inlined frames); each frame costs.
+constexpr int max_frames = 16;
 thread_local bool keeping = false;
 thread_local void* frames[max_frames];
 thread_local int frame_count = 0;
