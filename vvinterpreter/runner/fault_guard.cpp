@@ -36,6 +36,7 @@ char maps_buffer[1 << 18];
 char sample_maps_buffer[1 << 18];  // a sample may run while another thread crashes
 volatile sig_atomic_t samples_sent = 0;
 volatile sig_atomic_t last_sample = 0;
+volatile sig_atomic_t sample_number = 0;  // of the request being answered
 
 // The temporaries being written, each with the one vvlib writes before
 // renaming it (vv::io::temporary_beside): unlinked on a termination signal.
@@ -171,7 +172,10 @@ void on_sample(int sig, siginfo_t* info, void* context) {
   int saved_errno = errno;
   // The last sample before the supervisor ends the process: what the model
   // printed is written out first, as on a crash.
-  if (info && info->si_code == SI_QUEUE && info->si_value.sival_int == last_sample_value) last_sample = 1;
+  if (info && info->si_code == SI_QUEUE) {  // the request; forwarded without it (tgkill)
+    sample_number = info->si_value.sival_int / 2;
+    if (info->si_value.sival_int % 2 == 1) last_sample = 1;
+  }
   pid_t target = activity_thread;
   if (target != 0 && target != thread_id()) {
     syscall(SYS_tgkill, getpid(), target, sig);
@@ -181,7 +185,7 @@ void on_sample(int sig, siginfo_t* info, void* context) {
       flush_unlocked(stderr);
     }
     line l;
-    (l << "sample " << (target ? "running" : "idle")).send();
+    (l << "sample " << (target ? "running " : "idle ")).number(static_cast<unsigned>(sample_number), 10).send();
     if (target) {
       (l << "pc ").number(fault_pc(context), 16).send();
       send_frames();

@@ -35,10 +35,11 @@ void finish(bool announce = true);
 
 //! The signal the supervisor sends to ask where the announced activity is:
 //! the thread that runs it answers with a "sample" report of its stack.
-//! Queued with the value last_sample_value (sigqueue), it is the last
-//! before the process is ended: what the model printed is flushed first.
+//! Queued (sigqueue) with sample_request(number, last): the answer carries
+//! the number; the last before the process is ended flushes what the model
+//! printed first, and the model goes no further.
 int sample_signal();
-constexpr int last_sample_value = 1;
+constexpr int sample_request(int number, bool last) { return number * 2 + (last ? 1 : 0); }
 
 //! Sends the stack of the announced activity's thread to the supervisor
 //! now (from any thread of this process) and waits for it to be sent, at

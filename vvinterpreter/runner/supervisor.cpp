@@ -95,7 +95,9 @@ class report_reader {
   bool busy() const { return timed_; }
   //! Counts up from each "begin"; a new activity resets it.
   clock_type::time_point busy_since;
-  //! Set when a whole sample has arrived; the caller clears it.
+  //! The number of the last request for a sample; set when a whole answer
+  //! to it has arrived (the caller clears it).
+  int sample_asked = 0;
   bool sample_arrived = false;
   //! Bumped by every "begin": an activity's notices are its own.
   unsigned activity_number = 0;
@@ -122,9 +124,11 @@ class report_reader {
     } else if (key == "crash") {
       end_.crash.signal = rest;
       filling_ = &end_.crash;
-    } else if (key == "sample") {
+    } else if (key == "sample") {  // "WHY NUMBER"
+      std::size_t space_at = rest.find(' ');
       end_.sample = stack_sample();
-      end_.sample.why = rest;
+      end_.sample.why = rest.substr(0, space_at);
+      sample_number_ = space_at == std::string::npos ? -1 : std::atoi(rest.c_str() + space_at + 1);
       filling_ = &end_.sample;
     } else if (key == "exception") {
       end_.crash.exception = rest;
@@ -144,7 +148,9 @@ class report_reader {
       auto& w = end_.writing;
       w.erase(std::remove_if(w.begin(), w.end(), [&](const auto& p) { return p.second == rest; }), w.end());
     } else if (key == "end") {
-      if (filling_ == &end_.sample) sample_arrived = true;
+      // The answer to the request last made (or exit's own report).
+      if (filling_ == &end_.sample && (end_.sample.why == "exit" || sample_number_ == sample_asked))
+        sample_arrived = true;
       filling_ = nullptr;
     } else if (s_.on_line) {
       s_.on_line(l);
@@ -155,6 +161,7 @@ class report_reader {
   const supervision& s_;
   std::string pending_;
   stack_sample* filling_ = nullptr;
+  int sample_number_ = -1;
   bool timed_ = false;
 };
 
@@ -275,6 +282,7 @@ class watch {
     if (s_.on_long_activity && next_notice_ > 0 && !sampling_for_notice_) {
       if (busy >= next_notice_) {
         notice_seconds_ = next_notice_;
+        notice_activity_ = end_.activity;
         next_notice_ *= 2;
         if (safe_to_sample(pid_, reader_.activity_thread)) {
           ask_for_sample(now);
@@ -314,20 +322,21 @@ class watch {
     reader_.sample_arrived = false;
     sample_asked_ = now;
     sigval value{};
-    value.sival_int = last ? fault_guard::last_sample_value : 0;
+    value.sival_int = fault_guard::sample_request(++reader_.sample_asked, last);
     sigqueue(pid_, fault_guard::sample_signal(), value);
   }
 
-  // waiting: it was not asked where it is (safe_to_sample).
+  // waiting: it was not asked where it is (safe_to_sample). Told also when
+  // the block ended since it was asked: it was true then.
   void tell_long_activity(bool waiting = false) {
     long_activity a;
-    a.activity = end_.activity;
+    a.activity = notice_activity_;
     a.seconds = notice_seconds_;
     a.waiting = waiting;
     a.sample = !waiting && reader_.sample_arrived && end_.sample.why == "running" ? &end_.sample : nullptr;
     a.modules = &end_.modules;
     reader_.sample_arrived = false;
-    if (reader_.busy()) s_.on_long_activity(a);
+    s_.on_long_activity(a);
   }
 
   void finish(child_end::kind_t kind, int sig) {
@@ -422,6 +431,7 @@ class watch {
   bool sampling_for_notice_ = false;
   unsigned notices_for_ = 0;
   double next_notice_ = 0, notice_seconds_ = 0;
+  child_activity notice_activity_;
 };
 
 // The temporaries of files the child did not finish: they are its own
