@@ -23,12 +23,13 @@
 
 #include "runner/fault_guard.hpp"
 #include "runner/oom_kills.hpp"
+#include "runner/report_reader.hpp"
 
 namespace vvi {
 
 namespace {
 
-using clock_type = std::chrono::steady_clock;
+using clock_type = report_reader::clock_type;
 
 double seconds_between(clock_type::time_point a, clock_type::time_point b) {
   return std::chrono::duration<double>(b - a).count();
@@ -75,94 +76,6 @@ class supervisor_signals {
   const int signals_[count] = {SIGTERM, SIGINT, SIGHUP, SIGCHLD, SIGCONT};
   struct sigaction old_[count];
   sigset_t blocked_before_, waiting_mask_;
-};
-
-// Reads the protocol of runner/fault_guard.cpp, one line at a time.
-class report_reader {
- public:
-  report_reader(child_end& end, const supervision& s) : end_(end), s_(s) {}
-
-  void feed(const char* data, std::size_t n) {
-    pending_.append(data, n);
-    std::size_t at;
-    while ((at = pending_.find('\n')) != std::string::npos) {
-      line(pending_.substr(0, at));
-      pending_.erase(0, at + 1);
-    }
-  }
-
-  //! An announced activity runs (begun, not done): it is timed.
-  bool busy() const { return timed_; }
-  //! Counts up from each "begin"; a new activity resets it.
-  clock_type::time_point busy_since;
-  //! The number of the last request for a sample; set when a whole answer
-  //! to it has arrived (the caller clears it).
-  int sample_asked = 0;
-  bool sample_arrived = false;
-  //! Bumped by every "begin": an activity's notices are its own.
-  unsigned activity_number = 0;
-  //! The thread that runs the activity (its kernel id).
-  pid_t activity_thread = 0;
-
- private:
-  void line(const std::string& l) {
-    std::size_t space = l.find(' ');
-    std::string key = l.substr(0, space), rest = space == std::string::npos ? "" : l.substr(space + 1);
-    if (key == "begin" || key == "activity") {
-      // "WHAT STEP"
-      std::size_t last = rest.rfind(' ');
-      child_activity a;
-      a.what = rest.substr(0, last == std::string::npos ? rest.size() : last);
-      if (last != std::string::npos) a.step = static_cast<unsigned>(std::strtoul(rest.c_str() + last + 1, nullptr, 10));
-      end_.activity = a;
-      if (key == "begin") busy_since = clock_type::now(), ++activity_number, timed_ = true;
-    } else if (key == "thread") {
-      activity_thread = static_cast<pid_t>(std::strtol(rest.c_str(), nullptr, 10));
-    } else if (key == "done") {
-      end_.activity = child_activity();
-      timed_ = false;
-    } else if (key == "crash") {
-      end_.crash.signal = rest;
-      filling_ = &end_.crash;
-    } else if (key == "sample") {  // "WHY NUMBER"
-      std::size_t space_at = rest.find(' ');
-      end_.sample = stack_sample();
-      end_.sample.why = rest.substr(0, space_at);
-      sample_number_ = space_at == std::string::npos ? -1 : std::atoi(rest.c_str() + space_at + 1);
-      filling_ = &end_.sample;
-    } else if (key == "exception") {
-      end_.crash.exception = rest;
-    } else if (key == "pc") {
-      if (filling_) filling_->pc = std::strtoull(rest.c_str(), nullptr, 16);
-    } else if (key == "frame") {
-      if (filling_) filling_->frames.push_back(std::strtoull(rest.c_str(), nullptr, 16));
-    } else if (key == "map") {
-      if (filling_) filling_->maps.push_back(rest);
-    } else if (key == "module") {
-      std::size_t tab = rest.find('\t');
-      if (tab != std::string::npos) end_.modules[rest.substr(0, tab)] = rest.substr(tab + 1);
-    } else if (key == "writing") {
-      std::size_t tab = rest.find('\t');
-      if (tab != std::string::npos) end_.writing.emplace_back(rest.substr(tab + 1), rest.substr(0, tab));
-    } else if (key == "written") {
-      auto& w = end_.writing;
-      w.erase(std::remove_if(w.begin(), w.end(), [&](const auto& p) { return p.second == rest; }), w.end());
-    } else if (key == "end") {
-      // The answer to the request last made (or exit's own report).
-      if (filling_ == &end_.sample && (end_.sample.why == "exit" || sample_number_ == sample_asked))
-        sample_arrived = true;
-      filling_ = nullptr;
-    } else if (s_.on_line) {
-      s_.on_line(l);
-    }
-  }
-
-  child_end& end_;
-  const supervision& s_;
-  std::string pending_;
-  stack_sample* filling_ = nullptr;
-  int sample_number_ = -1;
-  bool timed_ = false;
 };
 
 // Whether a signal to this thread of the child leaves what the model does
