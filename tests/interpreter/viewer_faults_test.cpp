@@ -129,7 +129,8 @@ TEST(ViewerFaults, StopEndsAnEndlessStepAndTheModelComesBackAtItsLastGoodStep) {
   ASSERT_FALSE(r.timed_out) << "the endless step was not stopped\n" << report(r);
   EXPECT_EQ(r.status, 0) << report(r);
   EXPECT_TRUE(has(r.out, "wrote " + d + "running.png")) << "the window did not answer during the step\n" << report(r);
-  EXPECT_TRUE(has(r.err, "vvinterpreter: " + model + ": step 2 was stopped after ")) << report(r);
+  // Issue 23, item 5: the message names the line the step was stopped at.
+  EXPECT_TRUE(has(r.err, "vvinterpreter: " + model + ":22: step 2 was stopped after ")) << report(r);
   EXPECT_TRUE(has(r.err, "the model was run again to step 1, its last good state")) << report(r);
   EXPECT_TRUE(has(r.out, "wrote " + d + "S.vvm")) << report(r);
   EXPECT_EQ(vvm_vertex_count(d + "S.vvm"), 3);

@@ -5,12 +5,11 @@
 #include <string.h>
 #include <unistd.h>
 
-#include <vv/io/files.hpp>
-
 #include "render/image.hpp"
 #include "render/offscreen.hpp"
 #include "runner/crash_report.hpp"
 #include "runner/model_runner.hpp"
+#include "runner/output_file.hpp"
 #include "runner/plots.hpp"
 #include "runner/supervisor.hpp"
 #include "render/scene.hpp"
@@ -62,6 +61,7 @@ std::string screenshot(const options& o, model_runner& runner) {
   std::unique_ptr<offscreen> gl = offscreen::create(o.width, o.height, error);
   if (!gl) return error;
   session* model = runner.model();
+  if (model) model->announce_drawing(true);  // its render blocks are supervised like the others
   if (!init_rendering(model, error)) return error;
   mesh_drawing drawing;  // drawn unless the model draws itself; its bounds fit the view
   vv_geometry g{};
@@ -76,7 +76,9 @@ std::string screenshot(const options& o, model_runner& runner) {
   cam.fit(view_box(model, &drawing));
   cam.rotate_degrees(o.view_yaw, o.view_pitch);
   if (!draw_frame(model, &drawing, cam, o.width, o.height, error)) return error;
-  std::string written = write_png(o.screenshot, o.width, o.height, read_pixels(o.width, o.height));
+  std::vector<std::uint8_t> pixels = read_pixels(o.width, o.height);
+  std::string written =
+      write_output(o.screenshot, [&](const std::string& to) { return write_png(to, o.width, o.height, pixels); });
   drawing.release();
   return written;
 }
@@ -144,11 +146,15 @@ int run_model_headless(const options& o) {
   return 0;
 }
 
-// The temporaries the export and the screenshot are written to before
-// they are renamed into place.
-void remove_temporaries(const options& o) {
-  for (const std::string& target : {o.export_path, o.screenshot, o.plots_path})
-    if (!target.empty()) std::remove(vv::io::temporary_for(target).c_str());
+// While a block runs long, where it is (the supervisor asks the model).
+void tell_long_activity(const options& o, const long_activity& a) {
+  std::fprintf(stderr, "vvinterpreter: %s\n", describe_long_activity(a, o.model, o.step_timeout).c_str());
+  std::fflush(stderr);
+}
+
+int report_end(const crash_text& t) {
+  std::fprintf(stderr, "vvinterpreter: %s\n%s", t.line.c_str(), t.stack.c_str());
+  return 1;
 }
 
 }  // namespace
@@ -171,23 +177,22 @@ int run_batch(const options& o) {
   // --debug, --in-process: a debugger or profiler is the supervisor, and
   // it must see the model in this process.
   if (o.debug || o.in_process) return run_model_headless(o);
-  // Temporaries of a run that was killed before: they are ours by name.
-  remove_temporaries(o);
   supervision s;
   s.activity_timeout = o.step_timeout;
+  s.notice_after = seconds_from_environment("VV_NOTICE_AFTER", 10);
+  s.on_long_activity = [&](const long_activity& a) { tell_long_activity(o, a); };
   child_end end = run_supervised([&] { return run_model_headless(o); }, s);
   int status = end.exit_code;
   if (end.kind == child_end::interrupted) {
-    remove_temporaries(o);
     const char* name = sigabbrev_np(end.signal);
     fail(std::string("interrupted (SIG") + (name ? name : "?") + "); the files being written were removed");
     status = 128 + end.signal;
-  } else if (end.kind == child_end::timed_out) {
-    status = fail(describe_timeout(end, o.model, o.step_timeout));
-  } else if (end.kind == child_end::crashed) {
-    crash_text t = describe_crash(end, o.model);
-    std::fprintf(stderr, "vvinterpreter: %s\n%s", t.line.c_str(), t.stack.c_str());
-    status = 1;
+  } else if (end.kind == child_end::exited) {
+    // Inside a block the model ended the process itself: its steps and
+    // files are missing, whatever the status said.
+    if (!end.activity.what.empty()) status = report_end(describe_exit(end, o.model));
+  } else {
+    status = report_end(describe_crash(end, o.model));
   }
   remove_module_copies(end);
   return status;

@@ -119,18 +119,19 @@ std::vector<source_frame> model_frames(const std::vector<std::uintptr_t>& code_a
   return out;
 }
 
-std::vector<source_frame> model_stack(const child_end& end) {
-  const crash_info& c = end.crash;
-  // The frames before the faulting instruction are the handler's own.
+std::vector<source_frame> model_stack(const stack_sample& sample, const std::map<std::string, std::string>& modules) {
+  // The frames before the interrupted instruction are the handler's own.
   std::size_t first = 0;
-  for (std::size_t i = 0; i < c.frames.size(); ++i)
-    if (c.frames[i] == c.pc) first = i;
+  for (std::size_t i = 0; i < sample.frames.size(); ++i)
+    if (sample.frames[i] == sample.pc) first = i;
   std::vector<std::uintptr_t> calls;
-  for (std::size_t i = first; i < c.frames.size(); ++i)
+  for (std::size_t i = first; i < sample.frames.size(); ++i)
     // A return address points after its call: look up the call itself.
-    calls.push_back(c.frames[i] - (i == first && c.frames[i] == c.pc ? 0 : 1));
-  return model_frames(calls, c.maps, end.modules);
+    calls.push_back(sample.frames[i] - (i == first && sample.frames[i] == sample.pc ? 0 : 1));
+  return model_frames(calls, sample.maps, modules);
 }
+
+std::vector<source_frame> model_stack(const child_end& end) { return model_stack(end.crash, end.modules); }
 
 std::string activity_phrase(const child_activity& a) {
   if (a.what == "step") return "in step " + std::to_string(a.step);
@@ -141,48 +142,146 @@ std::string activity_phrase(const child_activity& a) {
   return "";
 }
 
-crash_text describe_crash(const child_end& end, const std::string& model) {
-  crash_text t;
-  std::vector<source_frame> stack = model_stack(end);
-  std::string where = stack.empty() ? model : stack.front().file + ":" + std::to_string(stack.front().line);
-  std::string sig = end.crash.signal;
-  if (sig.empty()) {  // it died without a report: killed from outside (the kernel's OOM killer, ...)
-    const char* abbrev = sigabbrev_np(end.signal);
-    sig = abbrev ? std::string("SIG") + abbrev : "signal " + std::to_string(end.signal);
-    if (end.signal == SIGKILL) sig += " (out of memory?)";
-  }
-  std::string activity = activity_phrase(end.activity);
-  std::string tail = activity.empty() ? "" : " " + activity;
-  if (!end.crash.exception.empty()) {
-    t.line = where + ": crashed with an uncaught exception (" + end.crash.exception + ")" + tail;
-    t.panel = t.line;
-  } else {
-    t.line = where + ": crashed with " + sig + tail;
-    t.panel = where + ": crashed (" + sig + ")" + tail;
-  }
-  // A recursion fills the stack with one frame: say it once.
+std::string activity_name(const child_activity& a) {
+  if (a.what == "step") return "step " + std::to_string(a.step);
+  if (a.what == "loading") return "loading the model (its global initialisers)";
+  if (a.what == "replay") return "running again to step " + std::to_string(a.step);
+  if (a.what.rfind("render", 0) == 0) return "drawing (" + a.what + ")";
+  if (a.what.empty()) return "the model";
+  return "the " + a.what + " block";
+}
+
+namespace {
+
+// "model.vvp:20" from the innermost .vvp frame, or the model's name.
+std::string place(const std::vector<source_frame>& stack, const std::string& model) {
+  return stack.empty() ? model : stack.front().file + ":" + std::to_string(stack.front().line);
+}
+
+// The model's call stack as lines; a recursion that fills the stack with
+// one frame is said once.
+std::string stack_lines(const std::vector<source_frame>& stack) {
+  std::string out;
   for (std::size_t i = 0; i < stack.size();) {
     const source_frame& f = stack[i];
     std::size_t same = 1;
     while (i + same < stack.size() && stack[i + same].file == f.file && stack[i + same].line == f.line &&
            stack[i + same].function == f.function)
       ++same;
-    t.stack += "  " + f.file + ":" + std::to_string(f.line) + " in " + f.function + "\n";
-    if (same > 1) t.stack += "  ... the same " + std::to_string(same - 1) + " more times\n";
+    out += "  " + f.file + ":" + std::to_string(f.line) + " in " + f.function + "\n";
+    if (same > 1) out += "  ... the same " + std::to_string(same - 1) + " more times\n";
     i += same;
   }
+  return out;
+}
+
+std::string seconds_text(double s) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%g", s);
+  return text;
+}
+
+std::string signal_text(int sig) {
+  const char* abbrev = sigabbrev_np(sig);
+  return abbrev ? std::string("SIG") + abbrev : "signal " + std::to_string(sig);
+}
+
+// A signal nobody reported (SIGKILL cannot be caught): who sent it, as far
+// as the system says.
+std::string killer(const child_end& end) {
+  if (end.signal != SIGKILL) return "";
+  if (end.oom_kills > 0) return " (the kernel's out-of-memory killer killed a process meanwhile: out of memory?)";
+  if (end.oom_kills == 0) return " (not by the kernel's out-of-memory killer)";
+  return " (by another process, or by the kernel's out-of-memory killer: the system does not say)";
+}
+
+// "in step 2", or for a death between blocks, the file being written.
+std::string where_it_was(const child_end& end) {
+  std::string activity = activity_phrase(end.activity);
+  if (activity.empty() && !end.writing.empty()) activity = "while writing " + end.writing.front().first;
+  return activity.empty() ? "" : " " + activity;
+}
+
+std::string stop_reason(int sig) {
+  switch (sig) {
+    case SIGSTOP: return "the model stopped itself, or another process stopped it";
+    case SIGTSTP: return "a terminal's stop (Ctrl+Z) that reached the model alone";
+    case SIGTTIN: return "it read from the terminal while running in the background";
+    case SIGTTOU: return "it wrote to the terminal while running in the background";
+    default: return "";
+  }
+}
+
+crash_text from_sample(const child_end& end, const std::string& model, const std::string& what) {
+  std::vector<source_frame> stack = model_stack(end.sample, end.modules);
+  crash_text t;
+  t.line = place(stack, model) + ": " + what;
+  t.panel = t.line;
+  t.stack = stack_lines(stack);
+  return t;
+}
+
+}  // namespace
+
+crash_text describe_crash(const child_end& end, const std::string& model) {
+  if (end.kind == child_end::timed_out) return describe_timeout(end, model);
+  if (end.kind == child_end::stopped) return describe_stop(end, model);
+  if (end.kind == child_end::exited) return describe_exit(end, model);
+  crash_text t;
+  std::vector<source_frame> stack = model_stack(end);
+  std::string where = place(stack, model);
+  std::string tail = where_it_was(end);
+  if (!end.crash.exception.empty()) {
+    t.line = where + ": crashed with an uncaught exception (" + end.crash.exception + ")" + tail;
+    t.panel = t.line;
+  } else if (end.crash.signal.empty()) {  // it died without a report: killed from outside
+    t.line = where + ": killed by " + signal_text(end.signal) + tail + killer(end);
+    t.panel = t.line;
+  } else {
+    t.line = where + ": crashed with " + end.crash.signal + tail;
+    t.panel = where + ": crashed (" + end.crash.signal + ")" + tail;
+  }
+  t.stack = stack_lines(stack);
   if (end.crash.frames.size() >= 64 && stack.size() >= 32 && end.crash.signal == "SIGSEGV")
     t.stack += "  (the stack is full: an endless recursion?)\n";
   return t;
 }
 
-std::string describe_timeout(const child_end& end, const std::string& model, double limit_seconds) {
-  char s[32];
-  std::snprintf(s, sizeof s, "%g", limit_seconds);
-  std::string what = end.activity.what == "step" ? "step " + std::to_string(end.activity.step)
-                     : end.activity.what.empty() ? std::string("the model")
-                                                 : end.activity.what;
-  return model + ": " + what + " ran longer than " + s + " s";
+crash_text describe_timeout(const child_end& end, const std::string& model) {
+  return from_sample(end, model,
+                     activity_name(end.activity) + " ran longer than " + seconds_text(end.time_limit) + " s and was ended");
+}
+
+crash_text describe_stop(const child_end& end, const std::string& model) {
+  std::string activity = activity_phrase(end.activity);
+  std::string reason = stop_reason(end.signal);
+  return from_sample(end, model,
+                     "stopped by " + signal_text(end.signal) + (activity.empty() ? "" : " " + activity) +
+                         (reason.empty() ? "" : " (" + reason + ")") + ", and ended");
+}
+
+crash_text describe_exit(const child_end& end, const std::string& model) {
+  std::string status = std::to_string(end.exit_code), activity = activity_phrase(end.activity);
+  if (end.sample.why == "exit")
+    return from_sample(end, model, "the model called exit(" + status + ") " + activity + ", before the run was done");
+  crash_text t;  // _exit: no handler ran, so no line
+  t.line = t.panel =
+      model + ": the model ended its process (exit status " + status + ") " + activity + ", before the run was done";
+  return t;
+}
+
+std::string describe_long_activity(const long_activity& a, const std::string& model, double limit) {
+  std::vector<source_frame> stack;
+  if (a.sample && a.modules) stack = model_stack(*a.sample, *a.modules);
+  std::string hint = limit > 0 ? "it is stopped at " + seconds_text(limit) + " s (--step-timeout)"
+                               : "--step-timeout SECONDS stops a step that runs longer";
+  return place(stack, model) + ": " + activity_name(a.activity) + " has been running for " + seconds_text(a.seconds) +
+         " s" + (a.waiting ? ", waiting in a system call (a sleep, or input)" : "") + "; " + hint;
+}
+
+std::string stopped_place(const child_end& end, const std::string& model) {
+  if (end.sample.why != "running") return model;
+  return place(model_stack(end.sample, end.modules), model);
 }
 
 }  // namespace vvi

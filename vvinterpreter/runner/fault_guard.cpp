@@ -1,16 +1,24 @@
 #include "runner/fault_guard.hpp"
 
+#include <cxxabi.h>
 #include <execinfo.h>
 #include <fcntl.h>
+#include <limits.h>
 #include <signal.h>
+#include <sys/syscall.h>
+#include <time.h>
 #include <ucontext.h>
 #include <unistd.h>
 
+#include <cerrno>
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
 #include <exception>
+#include <typeinfo>
+
+#include <vv/io/files.hpp>
 
 namespace vvi::fault_guard {
 
@@ -20,9 +28,22 @@ namespace {
 int report = -1;
 char activity[32] = "";
 unsigned activity_step = 0;
+// The thread of the announced activity (0: none): the one a sample is of.
+volatile pid_t activity_thread = 0;
 char exception_text[512] = "";
 volatile sig_atomic_t handling = 0;
 char maps_buffer[1 << 18];
+char sample_maps_buffer[1 << 18];  // a sample may run while another thread crashes
+volatile sig_atomic_t samples_sent = 0;
+volatile sig_atomic_t last_sample = 0;
+volatile sig_atomic_t sample_number = 0;  // of the request being answered
+
+// The temporaries being written, each with the one vvlib writes before
+// renaming it (vv::io::temporary_beside): unlinked on a termination signal.
+constexpr int max_writing = 4;
+char writing[max_writing][2][PATH_MAX];
+
+pid_t thread_id() { return static_cast<pid_t>(syscall(SYS_gettid)); }
 
 constexpr int fatal_signals[] = {SIGSEGV, SIGBUS, SIGFPE, SIGILL, SIGABRT};
 
@@ -81,17 +102,17 @@ void flush_unlocked(FILE* f) {
   }
 }
 
-void send_maps() {
+template <std::size_t N>
+void send_maps(char (&buffer)[N]) {
   int fd = open("/proc/self/maps", O_RDONLY | O_CLOEXEC);
   if (fd < 0) return;
   std::size_t n = 0;
   ssize_t r;
-  while (n < sizeof maps_buffer - 1 && (r = read(fd, maps_buffer + n, sizeof maps_buffer - 1 - n)) > 0)
-    n += static_cast<std::size_t>(r);
+  while (n < N - 1 && (r = read(fd, buffer + n, N - 1 - n)) > 0) n += static_cast<std::size_t>(r);
   close(fd);
-  maps_buffer[n] = '\0';
+  buffer[n] = '\0';
   // Only mappings of files: the supervisor looks up code addresses.
-  for (char* at = maps_buffer; *at;) {
+  for (char* at = buffer; *at;) {
     char* eol = std::strchr(at, '\n');
     if (eol) *eol = '\0';
     if (std::strchr(at, '/')) {
@@ -100,6 +121,13 @@ void send_maps() {
     }
     at = eol ? eol + 1 : at + std::strlen(at);
   }
+}
+
+void send_frames() {
+  void* frames[64];
+  int n = backtrace(frames, 64);
+  line l;
+  for (int i = 0; i < n; ++i) (l << "frame ").number(reinterpret_cast<std::uintptr_t>(frames[i]), 16).send();
 }
 
 std::uintptr_t fault_pc(void* context) {
@@ -129,13 +157,69 @@ void on_fatal(int sig, siginfo_t*, void* context) {
     if (activity[0]) (l << "activity " << activity << " ").number(activity_step, 10).send();
     if (exception_text[0]) (l << "exception " << exception_text).send();
     (l << "pc ").number(fault_pc(context), 16).send();
-    void* frames[64];
-    int n = backtrace(frames, 64);
-    for (int i = 0; i < n; ++i) (l << "frame ").number(reinterpret_cast<std::uintptr_t>(frames[i]), 16).send();
-    send_maps();
+    send_frames();
+    send_maps(maps_buffer);
     (l << "end").send();
   }
   signal(sig, SIG_DFL);  // the signal is blocked here: it kills us on return
+  raise(sig);
+}
+
+// The supervisor asks where the running block is (a long step, a time-out,
+// a stop). Any thread may receive the signal: it goes on to the one that
+// runs the announced activity, which reports its own stack and runs on.
+void on_sample(int sig, siginfo_t* info, void* context) {
+  int saved_errno = errno;
+  // The last sample before the supervisor ends the process: what the model
+  // printed is written out first, as on a crash.
+  if (info && info->si_code == SI_QUEUE) {  // the request; forwarded without it (tgkill)
+    sample_number = info->si_value.sival_int / 2;
+    if (info->si_value.sival_int % 2 == 1) last_sample = 1;
+  }
+  pid_t target = activity_thread;
+  if (target != 0 && target != thread_id()) {
+    syscall(SYS_tgkill, getpid(), target, sig);
+  } else if (!handling && report >= 0) {
+    if (last_sample) {
+      flush_unlocked(stdout);
+      flush_unlocked(stderr);
+    }
+    line l;
+    (l << "sample " << (target ? "running " : "idle ")).number(static_cast<unsigned>(sample_number), 10).send();
+    if (target) {
+      (l << "pc ").number(fault_pc(context), 16).send();
+      send_frames();
+      send_maps(sample_maps_buffer);
+    }
+    (l << "end").send();
+    samples_sent = samples_sent + 1;
+    // The supervisor ends the process now: the model must not go on (and
+    // finish, or print) in the meantime.
+    if (last_sample)
+      for (;;) pause();
+  }
+  errno = saved_errno;
+}
+
+// exit() inside a block ends the run before its end: tell the supervisor
+// where it was called (_exit cannot be seen; the supervisor still knows the
+// block from the protocol).
+void on_exit_call() {
+  if (activity_thread == 0 || report < 0) return;
+  flush_unlocked(stdout);
+  line l;
+  (l << "sample exit").send();
+  send_frames();
+  send_maps(sample_maps_buffer);
+  (l << "end").send();
+}
+
+// A termination signal (the supervisor went, Ctrl-C) ends the process as
+// it would have, without leaving a half-written file behind.
+void on_termination(int sig) {
+  for (auto& pair : writing)
+    if (pair[0][0]) unlink(pair[0]), unlink(pair[1]);
+  signal(sig, SIG_DFL);
   raise(sig);
 }
 
@@ -147,8 +231,18 @@ void on_terminate() {
       std::rethrow_exception(e);
     } catch (const std::exception& x) {
       std::snprintf(exception_text, sizeof exception_text, "%s", x.what());
+    } catch (const std::string& text) {
+      std::snprintf(exception_text, sizeof exception_text, "an exception of type std::string: %s", text.c_str());
+    } catch (const char* text) {
+      std::snprintf(exception_text, sizeof exception_text, "an exception of type const char*: %s",
+                    text ? text : "(null)");
     } catch (...) {
-      std::snprintf(exception_text, sizeof exception_text, "an exception that is not a std::exception");
+      const std::type_info* type = abi::__cxa_current_exception_type();
+      int status = 0;
+      char* name = type ? abi::__cxa_demangle(type->name(), nullptr, nullptr, &status) : nullptr;
+      std::snprintf(exception_text, sizeof exception_text, "an exception of type %s",
+                    name ? name : type ? type->name() : "unknown");
+      std::free(name);
     }
   } else {
     std::snprintf(exception_text, sizeof exception_text, "std::terminate was called");
@@ -192,24 +286,75 @@ void install(int report_fd) {
   sigemptyset(&sa.sa_mask);
   for (int sig : fatal_signals) sigaction(sig, &sa, nullptr);
   std::set_terminate(on_terminate);
+  if (report < 0) return;
+  struct sigaction sample {};
+  sample.sa_sigaction = on_sample;
+  sample.sa_flags = SA_SIGINFO | SA_ONSTACK | SA_RESTART;  // the model's system calls go on
+  sigemptyset(&sample.sa_mask);
+  sigaction(sample_signal(), &sample, nullptr);
+  struct sigaction term {};
+  term.sa_handler = on_termination;
+  sigemptyset(&term.sa_mask);
+  for (int sig : {SIGTERM, SIGINT, SIGHUP}) sigaction(sig, &term, nullptr);
+  std::atexit(on_exit_call);
+  std::at_quick_exit(on_exit_call);
 }
 
 void begin(const char* what, unsigned step, bool announce) {
   copy_text(activity, sizeof activity, what);
   activity_step = step;
   if (announce && report >= 0) {
+    activity_thread = thread_id();
     line l;
     (l << "begin " << what << " ").number(step, 10).send();
+    (l << "thread ").number(static_cast<unsigned long long>(activity_thread), 10).send();
   }
 }
 
 void finish(bool announce) {
   if (announce && report >= 0) {
+    activity_thread = 0;
     line l;
     (l << "done " << activity << " ").number(activity_step, 10).send();
   }
   activity[0] = '\0';
   activity_step = 0;
+}
+
+int sample_signal() { return SIGRTMIN + 3; }
+
+bool report_activity_stack(double max_seconds) {
+  pid_t target = activity_thread;
+  if (target == 0 || report < 0) return false;
+  sig_atomic_t before = samples_sent;
+  if (syscall(SYS_tgkill, getpid(), target, sample_signal()) != 0) return false;
+  const timespec pause{0, 1000000};
+  for (double waited = 0; waited < max_seconds; waited += 0.001) {
+    if (samples_sent != before) return true;
+    nanosleep(&pause, nullptr);
+  }
+  return samples_sent != before;
+}
+
+void note_writing(const std::string& temporary, const std::string& target) {
+  std::string inner = vv::io::temporary_beside(temporary);
+  for (auto& pair : writing)
+    if (!pair[0][0]) {
+      copy_text(pair[1], PATH_MAX, inner.c_str());
+      // The first byte last: a signal handler sees the whole path or none.
+      if (!temporary.empty() && temporary.size() < PATH_MAX) {
+        copy_text(pair[0] + 1, PATH_MAX - 1, temporary.c_str() + 1);
+        pair[0][0] = temporary[0];
+      }
+      break;
+    }
+  send("writing " + temporary + "\t" + target);
+}
+
+void note_written(const std::string& temporary) {
+  for (auto& pair : writing)
+    if (temporary == pair[0]) pair[0][0] = '\0';
+  send("written " + temporary);
 }
 
 void note_module(const std::string& loaded, const std::string& original) {

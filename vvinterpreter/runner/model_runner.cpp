@@ -2,6 +2,7 @@
 
 #include "app/files.hpp"
 #include "runner/mesh_export.hpp"
+#include "runner/output_file.hpp"
 
 namespace vvi {
 
@@ -176,6 +177,10 @@ std::string model_runner::export_to(const std::string& path) const { return expo
 std::string model_runner::export_to(const std::string& path, const std::vector<std::string>& names) const {
   if (!model_) return "no model is loaded";
   if (std::string e = unknown_mesh(*model_, o_.model, names); !e.empty()) return e;
+  return write_output(path, [&](const std::string& to) { return write_meshes(to, names); });
+}
+
+std::string model_runner::write_meshes(const std::string& path, const std::vector<std::string>& names) const {
   if (names.size() > 1) {
     std::vector<const char*> c = c_names(names);
     if (is_vvm_path(path)) {

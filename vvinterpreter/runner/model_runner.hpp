@@ -62,7 +62,8 @@ class model_runner {
   std::string describe_vertex(unsigned label, std::string& text) const;
   //! The files the model's file objects read (for watching them).
   std::vector<std::string> file_objects() const;
-  //! Writes the chosen meshes to a file (the format by its extension).
+  //! Writes the chosen meshes to a file (the format by its extension),
+  //! through runner/output_file.hpp.
   std::string export_to(const std::string& path) const;
   std::string export_to(const std::string& path, const std::vector<std::string>& meshes) const;
 
@@ -76,6 +77,9 @@ class model_runner {
   std::atomic<bool> cancel{false};
 
  private:
+  //! Writes the meshes to exactly this path (export_to's temporary).
+  std::string write_meshes(const std::string& path, const std::vector<std::string>& names) const;
+
   options o_;
   std::unique_ptr<session> model_;
   std::string plugin_;

@@ -6,6 +6,8 @@
 #include <vv/fields.hpp>
 #include <vv/io/files.hpp>
 
+#include "runner/output_file.hpp"
+
 namespace vvi {
 
 namespace {
@@ -44,12 +46,14 @@ std::string plots_csv(const vv::proxy& p) {
 }
 
 std::string write_plots(const std::string& path, const vv::proxy& p) {
-  try {
-    vv::io::write_text_file(path, plots_csv(p));
-  } catch (const std::exception& e) {
-    return e.what();
-  }
-  return "";
+  return write_output(path, [&](const std::string& to) -> std::string {
+    try {
+      vv::io::write_text_file(to, plots_csv(p));
+    } catch (const std::exception& e) {
+      return e.what();
+    }
+    return "";
+  });
 }
 
 }  // namespace vvi

@@ -5,8 +5,8 @@
 #include <fstream>
 
 #include "runner/crash_report.hpp"
-
 #include "runner/fault_guard.hpp"
+#include "runner/throw_points.hpp"
 
 namespace vvi {
 
@@ -50,7 +50,9 @@ bool session::run(const char* block, plugin::block_fn fn, unsigned step, bool an
   // close are still announced (a step without a step block still counts).
   if (!fn && !announce) return true;
   fault_guard::begin(block, step, announce);
+  throw_points::keep(true);
   const char* e = fn ? fn() : nullptr;
+  throw_points::keep(false);
   fault_guard::finish(announce);
   if (e) {
     error_ = locate(e);
@@ -80,10 +82,13 @@ bool session::end() {
   return run("end", plugin_->model().end);
 }
 bool session::reread() { return run("reread", plugin_->model().reread); }
-// Drawing is not timed (it is not announced): it runs every frame.
-bool session::render_init() { return run("render_init", plugin_->model().render_init, 0, false); }
-bool session::render() { return run("render", plugin_->model().render, 0, false); }
-bool session::render_screen() { return run("render_screen", plugin_->model().render_screen, 0, false); }
+// The viewer draws every frame: its drawing is not announced (the pipe
+// would carry 60 lines a second). Batch draws once, supervised like any block.
+bool session::render_init() { return run("render_init", plugin_->model().render_init, 0, announce_drawing_); }
+bool session::render() { return run("render", plugin_->model().render, 0, announce_drawing_); }
+bool session::render_screen() {
+  return run("render_screen", plugin_->model().render_screen, 0, announce_drawing_);
+}
 
 bool session::step() {
   proxy().plot_step = steps_ + 1;

@@ -33,6 +33,9 @@ class session {
   bool render_init();
   bool render();
   bool render_screen();
+  //! Drawing is announced to the supervisor (timed, sampled) like the
+  //! other blocks: for a single drawing (batch), not every frame.
+  void announce_drawing(bool on) { announce_drawing_ = on; }
   //! Runs the close block (once); the plugin stays loaded until destruction.
   void close();
   //! A model that never started is unloaded without its close block.
@@ -67,6 +70,7 @@ class session {
   std::string error_;
   bool closed_ = false;
   bool check_ = false;
+  bool announce_drawing_ = false;
 };
 
 }  // namespace vvi

@@ -44,7 +44,7 @@ viewer_resume resume_after(const options& o, const viewer_resume& before, const 
   if (!r.replay) r.good_steps = 0;
   r.note = restart_note(r);
   if (stopped) {
-    r.error = o.model + ": " + state.stopped + "; " + r.note;
+    r.error = stopped_place(end, o.model) + ": " + state.stopped + "; " + r.note;
     say_error(r.error);
   } else {
     crash_text t = describe_crash(end, o.model);
@@ -83,7 +83,10 @@ int run_viewer(const options& o) {
     }
     if (!state.up || state.quitting) {  // nothing to go back to
       crash_text t = describe_crash(end, o.model);
-      say_error((state.up ? "the viewer crashed while closing: " : "the viewer could not start: ") + t.line);
+      const char* how = !state.up ? "the viewer could not start: "
+                        : end.kind == child_end::timed_out ? "the viewer could not close: "
+                                                           : "the viewer crashed while closing: ";
+      say_error(how + t.line);
       remove_module_copies(end);
       return 1;
     }

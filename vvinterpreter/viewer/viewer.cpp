@@ -19,6 +19,7 @@
 #include "app/files.hpp"
 #include "render/image.hpp"
 #include "render/scene.hpp"
+#include "runner/fault_guard.hpp"
 #include "runner/model_runner.hpp"
 #include "runner/parameter_source.hpp"
 #include "runner/plots.hpp"
@@ -303,6 +304,7 @@ class viewer {
     std::snprintf(secs, sizeof secs, "%.1f", worker_.busy_seconds());
     std::string what = worker_.what();
     std::string activity = what.rfind("step", 0) == 0 ? "step" : what.rfind("loading", 0) == 0 ? "loading" : what;
+    fault_guard::report_activity_stack();  // the supervisor names the line it was stopped at
     tell_supervisor("stopped", activity + " " + what + " was stopped after " + secs + " s");
     std::fflush(nullptr);
     _exit(viewer_restart_code);  // the worker may be anywhere: no clean-up

@@ -10,12 +10,15 @@
 // the host calls on the whole model. The host finds it with one dlsym.
 #pragma once
 
+#include <cxxabi.h>
+
 #include <algorithm>
 #include <cstddef>
 #include <cstdint>
 #include <cstdlib>
 #include <exception>
 #include <stdexcept>
+#include <typeinfo>
 #include <limits>
 #include <memory>
 #include <string>
@@ -157,7 +160,20 @@ struct exchange {
   std::vector<char> was_symmetric;   //!< per global mesh, at the last check
 };
 
-//! Runs fn, turning any exception into the returned message (or NULL).
+}  // namespace vv::plugin
+
+extern "C" {
+//! Given by a host that keeps where exceptions are thrown (vvinterpreter):
+//! the return addresses of the last throw on this thread while a block
+//! runs. Weak: NULL in any other host.
+__attribute__((weak)) std::size_t vv_host_throw_frames(void** frames, std::size_t max);
+}
+
+namespace vv::plugin {
+
+//! Runs fn, turning any exception into the returned message (or NULL). An
+//! exception that is not a vv::error keeps where it was thrown, when the
+//! host knows (its stack is gone once caught): the host names its .vvp line.
 template <class Fn>
 const char* guarded(exchange& x, Fn&& fn) noexcept {
   x.error_frames.clear();
@@ -167,10 +183,23 @@ const char* guarded(exchange& x, Fn&& fn) noexcept {
   } catch (const vv::error& e) {
     x.last_error = e.what();
     x.error_frames = e.frames();
+    return x.last_error.c_str();
   } catch (const std::exception& e) {
     x.last_error = e.what();
+  } catch (const std::string& text) {
+    x.last_error = "an exception of type std::string: " + text;
+  } catch (const char* text) {
+    x.last_error = std::string("an exception of type const char*: ") + (text ? text : "(null)");
   } catch (...) {
-    x.last_error = "unknown exception";
+    const std::type_info* type = abi::__cxa_current_exception_type();
+    int status = 0;
+    char* name = type ? abi::__cxa_demangle(type->name(), nullptr, nullptr, &status) : nullptr;
+    x.last_error = std::string("an exception of type ") + (name ? name : type ? type->name() : "unknown");
+    std::free(name);
+  }
+  if (vv_host_throw_frames) {
+    x.error_frames.resize(48);
+    x.error_frames.resize(vv_host_throw_frames(x.error_frames.data(), x.error_frames.size()));
   }
   return x.last_error.c_str();
 }
