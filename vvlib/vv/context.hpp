@@ -98,10 +98,9 @@ class context {
   //! Remember where each neighbourhood was last edited (vvinterpreter
   //! --check names that line when a neighbourhood is found broken).
   void track_edits(bool on) { tracking_edits_ = on; }
+  //! On every edit: a test and a branch unless tracking is on.
   void note_edit(std::uint32_t id, const where& w) {
-    if (!tracking_edits_) return;
-    if (id >= last_edit_.size()) last_edit_.resize(std::max<std::size_t>(next_slot_, id + 1));
-    last_edit_[id] = {w, ++edits_};
+    if (tracking_edits_) record_edit(id, w);
   }
   struct edit_mark {
     where at;               //!< file null: not edited while tracked
@@ -173,6 +172,10 @@ class context {
   }
 
   std::uint32_t allocate_slot();
+  [[gnu::noinline]] void record_edit(std::uint32_t id, const where& w) {
+    if (id >= last_edit_.size()) last_edit_.resize(std::max<std::size_t>(next_slot_, id + 1));
+    last_edit_[id] = {w, ++edits_};
+  }
   void free_slot(std::uint32_t id);
 
   std::vector<std::unique_ptr<chunk>> chunks_;

@@ -34,6 +34,17 @@ vertex<typename V::traits_type> any_in(const V& v, where w = where::here()) {
 }
 
 namespace detail {
+// The position `count` places after (forward) or before pos in a cyclic
+// list of n entries (pos < n). Without a division when count < n, as it
+// is for nextto/prevto: a 64-bit division costs tens of cycles, several
+// per edge in a subdivision step.
+inline std::uint32_t cyclic_step(std::uint32_t pos, std::uint32_t n, unsigned long count,
+                                 bool forward) noexcept {
+  std::uint32_t k = count < n ? static_cast<std::uint32_t>(count) : static_cast<std::uint32_t>(count % n);
+  if (forward) return pos < n - k ? pos + k : pos - (n - k);
+  return pos >= k ? pos - k : pos + (n - k);
+}
+
 // The neighbour `count` places after (forward) or before x around v,
 // cyclically. count >= 1; taken modulo the valence first, so no sum
 // overflows however large it is.
@@ -45,10 +56,7 @@ vertex<typename V::traits_type> step_from(const vertex<typename V::traits_type>&
   // A null or foreign x has slot 0, which no entry holds.
   std::int32_t pos = find(*s.nb, slot_in(x, s.ctx));
   if (pos < 0) return vx();
-  unsigned long n = s.nb->size();
-  unsigned long k = count % n;
-  unsigned long at = forward ? (static_cast<unsigned long>(pos) + k) % n : (static_cast<unsigned long>(pos) + n - k) % n;
-  return vx::from_slot(s.ctx, entry_id((*s.nb)[static_cast<std::uint32_t>(at)]));
+  return vx::from_slot(s.ctx, entry_id((*s.nb)[cyclic_step(static_cast<std::uint32_t>(pos), s.nb->size(), count, forward)]));
 }
 
 // The count of next(i)to / prev(i)to: 1 or more.
@@ -103,8 +111,7 @@ vertex<typename V::traits_type> beside_flag(const V& v, int step, const char* op
   auto s = view(v, op, w);
   std::int32_t f = s.nb->flag();
   if (f < 0) throw error(w, op, "no flag is set in the neighbourhood");
-  std::int32_t n = static_cast<std::int32_t>(s.nb->size());
-  std::uint32_t k = static_cast<std::uint32_t>(((f + step) % n + n) % n);
+  std::uint32_t k = cyclic_step(static_cast<std::uint32_t>(f), s.nb->size(), 1, step > 0);
   return vx::from_slot(s.ctx, entry_id((*s.nb)[k]));
 }
 }  // namespace detail
