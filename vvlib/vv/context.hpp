@@ -3,11 +3,19 @@
 //
 // Storage. Vertices live in fixed-size chunks that never move, so a
 // reference to a property stays valid while other vertices are created.
-// Inside a chunk the parts of a vertex (reference count, label, current and
-// old neighbourhood, current and old properties) are separate arrays that
-// grow in lockstep: a scan touches only the array it needs. Creating a
-// vertex reuses a freed slot or takes the next one; nothing is allocated per
+// Inside a chunk the parts of a vertex (reference count, label, current
+// neighbourhood, current properties) are separate arrays that grow in
+// lockstep: a scan touches only the array it needs. Creating a vertex
+// reuses a freed slot or takes the next one; nothing is allocated per
 // vertex.
+//
+// Old state. The synchronised neighbourhoods and properties of a chunk live
+// in a block of their own, made when the first vertex of the chunk is
+// synchronised. Vertices are created in order, so after a subdivision step
+// the vertices it created (three quarters of a Loop mesh) fill chunks that
+// no synchronise has reached and cost no old state; a vertex never
+// synchronised reads as an empty neighbourhood and value-initialised
+// properties (one shared instance).
 //
 // Lifetime. A vertex lives while anything refers to it. Handles (program
 // variables) and mesh memberships are counted; neighbourhood entries are
@@ -59,7 +67,7 @@ class context {
     // storage is still whole.
     for (std::uint32_t id = 1; id < next_slot_; ++id) {
       props(id) = vertex_props();
-      old_props(id) = vertex_props();
+      if (at(id).old) writable_old_props(id) = vertex_props();
     }
   }
 
@@ -123,9 +131,19 @@ class context {
   std::uint32_t& refs(std::uint32_t id) noexcept { return at(id).refs[id & mask]; }
   std::uint32_t label(std::uint32_t id) const noexcept { return at(id).label[id & mask]; }
   nb_type& nb(std::uint32_t id) noexcept { return at(id).nb[id & mask]; }
-  nb_type& old_nb(std::uint32_t id) noexcept { return at(id).old_nb[id & mask]; }
   vertex_props& props(std::uint32_t id) noexcept { return at(id).props[id & mask]; }
-  vertex_props& old_props(std::uint32_t id) noexcept { return at(id).old_props[id & mask]; }
+  //! The old state: what the last synchronise saved, read-only.
+  const nb_type& old_nb(std::uint32_t id) const noexcept {
+    const chunk& c = at(id);
+    return c.old ? c.old->nb[id & mask] : never_synchronised_nb_;
+  }
+  const vertex_props& old_props(std::uint32_t id) const noexcept {
+    const chunk& c = at(id);
+    return c.old ? c.old->props[id & mask] : never_synchronised_props_;
+  }
+  //! The old state to write (synchronise), made on first use.
+  nb_type& writable_old_nb(std::uint32_t id) { return old_block_of(id).nb[id & mask]; }
+  vertex_props& writable_old_props(std::uint32_t id) { return old_block_of(id).props[id & mask]; }
   bool is_live(std::uint32_t id) const noexcept {
     return id != 0 && id < next_slot_ && label(id) != 0;
   }
@@ -153,13 +171,19 @@ class context {
  private:
   static constexpr std::uint32_t mask = chunk_size - 1;
 
+  struct old_block {
+    old_block() {
+      for (nb_type& o : nb) o.set_flag(nb_type::never_synchronised);
+    }
+    nb_type nb[chunk_size];
+    vertex_props props[chunk_size];
+  };
   struct chunk {
     std::uint32_t refs[chunk_size];
     std::uint32_t label[chunk_size];  // 0: the slot is free
     nb_type nb[chunk_size];
-    nb_type old_nb[chunk_size];
     vertex_props props[chunk_size];
-    vertex_props old_props[chunk_size];
+    std::unique_ptr<old_block> old;  // null until a vertex of the chunk is synchronised
   };
 
   chunk& at(std::uint32_t id) noexcept { return *chunks_[id >> chunk_bits]; }
@@ -168,7 +192,11 @@ class context {
   void add_chunk() {
     // Value-initialisation zeroes counts, labels and the properties.
     chunks_.push_back(std::unique_ptr<chunk>(new chunk()));
-    for (nb_type& o : chunks_.back()->old_nb) o.set_flag(nb_type::never_synchronised);
+  }
+  old_block& old_block_of(std::uint32_t id) {
+    chunk& c = at(id);
+    if (!c.old) c.old.reset(new old_block());
+    return *c.old;
   }
 
   std::uint32_t allocate_slot();
@@ -193,6 +221,8 @@ class context {
   std::vector<edit_mark> last_edit_;  // by slot, while tracking
   std::uint64_t edits_ = 0;
   edge_props empty_record_{};
+  nb_type never_synchronised_nb_{typename nb_type::never_synchronised_tag()};
+  vertex_props never_synchronised_props_{};
 
   static constexpr std::size_t min_gc_threshold = 1u << 14;
 };
@@ -223,11 +253,13 @@ void context<Tr>::free_slot(std::uint32_t id) {
   c.label[i] = 0;
   c.nb[i].clear();
   c.nb[i].set_flag(nb_type::no_flag);
-  c.old_nb[i].clear();
-  c.old_nb[i].set_flag(nb_type::never_synchronised);
   // Resetting the properties may release handles they hold.
   c.props[i] = vertex_props();
-  c.old_props[i] = vertex_props();
+  if (c.old) {
+    c.old->nb[i].clear();
+    c.old->nb[i].set_flag(nb_type::never_synchronised);
+    c.old->props[i] = vertex_props();
+  }
   free_slots_.push_back(id);
   --live_;
 }
@@ -268,11 +300,13 @@ std::size_t context<Tr>::storage_bytes() const noexcept {
   std::size_t bytes = chunks_.size() * sizeof(chunk) +
                       chunks_.capacity() * sizeof(std::unique_ptr<chunk>) +
                       free_slots_.capacity() * sizeof(std::uint32_t);
-  for (const auto& c : chunks_)
+  for (const auto& c : chunks_) {
+    if (c->old) bytes += sizeof(old_block);
     for (std::uint32_t i = 0; i < chunk_size; ++i) {
       if (c->nb[i].size() > Tr::inline_valence) bytes += c->nb[i].size() * sizeof(entry);
-      if (c->old_nb[i].size() > Tr::inline_valence) bytes += c->old_nb[i].size() * sizeof(entry);
+      if (c->old && c->old->nb[i].size() > Tr::inline_valence) bytes += c->old->nb[i].size() * sizeof(entry);
     }
+  }
   return bytes;
 }
 

@@ -7,6 +7,8 @@
 // checked (null, the target itself, or already a neighbour: errors).
 #pragma once
 
+#include "detail/inline.hpp"
+
 #include <algorithm>
 #include <cstdint>
 #include <initializer_list>
@@ -20,13 +22,13 @@ namespace vv {
 namespace detail {
 
 template <class Tr>
-auto& mutable_nb(const vertex<Tr>& v) {
+VV_INLINE auto& mutable_nb(const vertex<Tr>& v) {
   return v.ctx()->nb(v.slot());
 }
 
 // Insert x at position pos of v*, keeping the flag on its entry.
 template <class Tr>
-void insert_at(const vertex<Tr>& v, std::uint32_t pos, const vertex<Tr>& x) {
+VV_INLINE void insert_at(const vertex<Tr>& v, std::uint32_t pos, const vertex<Tr>& x) {
   using entry_traits = typename context<Tr>::entry_traits;
   auto& nb = mutable_nb(v);
   nb.insert(pos, entry_traits::make(x.slot()));
@@ -97,7 +99,7 @@ void make_neighbourhood(const vertex<Tr>& v, It first, It last, const where& w) 
 
 //! `make {a, b, c} nb_of v;`
 template <class V, detail::if_vertex_like<V> = 0>
-void make_nb(const V& target, std::initializer_list<vertex<typename V::traits_type>> list,
+VV_INLINE void make_nb(const V& target, std::initializer_list<vertex<typename V::traits_type>> list,
              where w = where::here()) {
   const auto& v = detail::edit_target(target, "make", w);
   detail::make_neighbourhood(v, list.begin(), list.end(), w);
@@ -120,7 +122,7 @@ void erase_from(const vertex<typename V::traits_type>& x, const V& target,
 
 //! `replace a with x in v;` — x takes a's place and keeps its record.
 template <class V, detail::if_vertex_like<V> = 0>
-void replace_in(const vertex<typename V::traits_type>& a, const vertex<typename V::traits_type>& x,
+VV_INLINE void replace_in(const vertex<typename V::traits_type>& a, const vertex<typename V::traits_type>& x,
                 const V& target, where w = where::here()) {
   const auto& v = detail::edit_target(target, "replace", w);
   auto& nb = detail::mutable_nb(v);

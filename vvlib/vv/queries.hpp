@@ -3,6 +3,8 @@
 // null target is an error, a missing neighbour gives the null vertex.
 #pragma once
 
+#include "detail/inline.hpp"
+
 #include <cstddef>
 #include <cstdint>
 
@@ -12,13 +14,13 @@ namespace vv {
 
 //! `valence v`
 template <class V, detail::if_vertex_like<V> = 0>
-std::size_t valence(const V& v, where w = where::here()) {
+VV_INLINE std::size_t valence(const V& v, where w = where::here()) {
   return detail::view(v, "valence", w).nb->size();
 }
 
 //! `is x in v`: x is a neighbour of v.
 template <class V, detail::if_vertex_like<V> = 0>
-bool is_in(const vertex<typename V::traits_type>& x, const V& v, where w = where::here()) {
+VV_INLINE bool is_in(const vertex<typename V::traits_type>& x, const V& v, where w = where::here()) {
   auto s = detail::view(v, "is ... in", w);
   std::uint32_t id = detail::slot_in(x, s.ctx);
   return id != 0 && detail::find(*s.nb, id) >= 0;
@@ -26,7 +28,7 @@ bool is_in(const vertex<typename V::traits_type>& x, const V& v, where w = where
 
 //! `any in v`: the first neighbour, or null when there is none.
 template <class V, detail::if_vertex_like<V> = 0>
-vertex<typename V::traits_type> any_in(const V& v, where w = where::here()) {
+VV_INLINE vertex<typename V::traits_type> any_in(const V& v, where w = where::here()) {
   using vx = vertex<typename V::traits_type>;
   auto s = detail::view(v, "any in", w);
   if (s.nb->empty()) return vx();
@@ -49,7 +51,7 @@ inline std::uint32_t cyclic_step(std::uint32_t pos, std::uint32_t n, unsigned lo
 // cyclically. count >= 1; taken modulo the valence first, so no sum
 // overflows however large it is.
 template <class V>
-vertex<typename V::traits_type> step_from(const vertex<typename V::traits_type>& x, const V& v,
+VV_INLINE vertex<typename V::traits_type> step_from(const vertex<typename V::traits_type>& x, const V& v,
                                           unsigned long count, bool forward, const char* op, const where& w) {
   using vx = vertex<typename V::traits_type>;
   auto s = view(v, op, w);
@@ -71,24 +73,24 @@ inline unsigned long step_count(long i, const char* op, const where& w) {
 //! in v's rotation, counted cyclically; null when x is not a neighbour of
 //! v. i < 1 is an error.
 template <class V, detail::if_vertex_like<V> = 0>
-vertex<typename V::traits_type> next_to(const vertex<typename V::traits_type>& x, const V& v,
+VV_INLINE vertex<typename V::traits_type> next_to(const vertex<typename V::traits_type>& x, const V& v,
                                         long i, where w = where::here()) {
   return detail::step_from(x, v, detail::step_count(i, "next(i)to", w), true, "next(i)to", w);
 }
 template <class V, detail::if_vertex_like<V> = 0>
-vertex<typename V::traits_type> next_to(const vertex<typename V::traits_type>& x, const V& v,
+VV_INLINE vertex<typename V::traits_type> next_to(const vertex<typename V::traits_type>& x, const V& v,
                                         where w = where::here()) {
   return detail::step_from(x, v, 1UL, true, "nextto", w);
 }
 
 //! `prev(i)to x in v` (i = 1: `prevto`); i < 1 is an error.
 template <class V, detail::if_vertex_like<V> = 0>
-vertex<typename V::traits_type> prev_to(const vertex<typename V::traits_type>& x, const V& v,
+VV_INLINE vertex<typename V::traits_type> prev_to(const vertex<typename V::traits_type>& x, const V& v,
                                         long i, where w = where::here()) {
   return detail::step_from(x, v, detail::step_count(i, "prev(i)to", w), false, "prev(i)to", w);
 }
 template <class V, detail::if_vertex_like<V> = 0>
-vertex<typename V::traits_type> prev_to(const vertex<typename V::traits_type>& x, const V& v,
+VV_INLINE vertex<typename V::traits_type> prev_to(const vertex<typename V::traits_type>& x, const V& v,
                                         where w = where::here()) {
   return detail::step_from(x, v, 1UL, false, "prevto", w);
 }

@@ -2,6 +2,8 @@
 // read-only view of a vertex's synchronised (old) state.
 #pragma once
 
+#include "detail/inline.hpp"
+
 #include <cstddef>
 #include <cstdint>
 #include <functional>
@@ -154,12 +156,12 @@ class old_vertex {
 };
 
 template <class Tr>
-old_vertex<Tr> old(const vertex<Tr>& v, where w = where::here()) {
+VV_INLINE old_vertex<Tr> old(const vertex<Tr>& v, where w = where::here()) {
   return old_vertex<Tr>(v, w);
 }
 //! `` ``v `` is `` `v ``: the old state has no old state of its own.
 template <class Tr>
-old_vertex<Tr> old(const old_vertex<Tr>& v, where = where::here()) {
+VV_INLINE old_vertex<Tr> old(const old_vertex<Tr>& v, where = where::here()) {
   return v;
 }
 
