@@ -112,12 +112,14 @@ options parse_options(int argc, char** argv)
 using run_fn = std::function<bench_result(const bench_input&, int, bool)>;
 
 struct contender {
+  contender(std::string name_, run_fn run_, bool same_positions_)
+      : name(std::move(name_)), run(std::move(run_)), same_positions(same_positions_) {}
   std::string name;
   run_fn run;
   bool same_positions;  // its positions must match the reference's, not only its counts
-  std::vector<double> ms;  // every run, in order
-  bench_result first;      // bytes and positions come from the first run
-  double median = 0;
+  std::vector<double> ms, cpu_ms;  // every run, in order
+  bench_result first;              // bytes and positions come from the first run
+  double median = 0, cpu_median = 0;
   double bytes_per_vertex() const
   {
     return first.vertices ? static_cast<double>(first.bytes) / static_cast<double>(first.vertices) : 0.0;
@@ -142,11 +144,11 @@ double median_of(std::vector<double> values)
 
 void print_table(const scheme_run& s)
 {
-  std::printf("%-10s %11s %10s %10s %13s %9s  %s\n", "impl", "median ms", "V", "F", "bytes",
+  std::printf("%-10s %11s %9s %9s %9s %12s %9s  %s\n", "impl", "median ms", "cpu ms", "V", "F", "bytes",
               "B/vertex", "runs (ms)");
   for (const contender& c : s.contenders) {
-    std::printf("%-10s %11.3f %10zu %10zu %13zu %9.1f  ", c.name.c_str(), c.median, c.first.vertices,
-                c.first.faces, c.first.bytes, c.bytes_per_vertex());
+    std::printf("%-10s %11.3f %9.3f %9zu %9zu %12zu %9.1f  ", c.name.c_str(), c.median, c.cpu_median,
+                c.first.vertices, c.first.faces, c.first.bytes, c.bytes_per_vertex());
     for (std::size_t i = 0; i < c.ms.size(); ++i) std::printf(i ? " %.3f" : "%.3f", c.ms[i]);
     std::printf("\n");
   }
@@ -185,9 +187,13 @@ bool run_scheme(scheme_run& s, int runs, const bench_input& warm_up)
     for (contender& c : s.contenders) {
       bench_result result = c.run(input, s.levels, r == 0);
       c.ms.push_back(result.ms);
+      c.cpu_ms.push_back(result.cpu_ms);
       if (r == 0) c.first = std::move(result);
     }
-  for (contender& c : s.contenders) c.median = median_of(c.ms);
+  for (contender& c : s.contenders) {
+    c.median = median_of(c.ms);
+    c.cpu_median = median_of(c.cpu_ms);
+  }
   print_table(s);
 
   std::string line = s.name + std::to_string(s.levels);
@@ -201,10 +207,11 @@ bool run_scheme(scheme_run& s, int runs, const bench_input& warm_up)
     if (ours.name != "vv" && ours.name != "vvlib") continue;
     for (const contender& peer : s.contenders) {
       if (peer.name == "vv" || peer.name == "vvlib") continue;
-      const double ratio = ours.median / peer.median;
-      std::printf("time %s/%s: %.3f\n", ours.name.c_str(), peer.name.c_str(), ratio);
-      char field[96];
-      std::snprintf(field, sizeof field, " %s_vs_%s=%.3f", ours.name.c_str(), peer.name.c_str(), ratio);
+      const double ratio = ours.median / peer.median, cpu_ratio = ours.cpu_median / peer.cpu_median;
+      std::printf("time %s/%s: %.3f (cpu time: %.3f)\n", ours.name.c_str(), peer.name.c_str(), ratio, cpu_ratio);
+      char field[128];
+      std::snprintf(field, sizeof field, " %s_vs_%s=%.3f %s_vs_%s_cpu=%.3f", ours.name.c_str(), peer.name.c_str(),
+                    ratio, ours.name.c_str(), peer.name.c_str(), cpu_ratio);
       line += field;
     }
   }
@@ -267,33 +274,33 @@ int run(const options& opt)
     scheme_run s{name, &triangles, levels(3), {}};
     const bench_input* warm = &warm_triangles;
     if (name == "loop") {
-      s.contenders = {{"openmesh", run_openmesh_loop, true, {}, {}, 0},
-                      {"vv", translated("loop", "pyramid.vvm", scratch.path), true, {}, {}, 0},
-                      {"vvlib", run_vvlib_loop, true, {}, {}, 0},
-                      {"cgal", run_cgal_loop, true, {}, {}, 0},
-                      {"opensubdiv", run_opensubdiv_loop, true, {}, {}, 0}};
+      s.contenders = {{"openmesh", run_openmesh_loop, true},
+                      {"vv", translated("loop", "pyramid.vvm", scratch.path), true},
+                      {"vvlib", run_vvlib_loop, true},
+                      {"cgal", run_cgal_loop, true},
+                      {"opensubdiv", run_opensubdiv_loop, true}};
     } else if (name == "catmull_clark") {
       s.input = &quads;
       warm = &warm_quads;
-      s.contenders = {{"openmesh", run_openmesh_catmull_clark, true, {}, {}, 0},
-                      {"vv", translated("catmull_clark", "cube.vvm", scratch.path), true, {}, {}, 0},
-                      {"cgal", run_cgal_catmull_clark, true, {}, {}, 0},
-                      {"opensubdiv", run_opensubdiv_catmull_clark, true, {}, {}, 0}};
+      s.contenders = {{"openmesh", run_openmesh_catmull_clark, true},
+                      {"vv", translated("catmull_clark", "cube.vvm", scratch.path), true},
+                      {"cgal", run_cgal_catmull_clark, true},
+                      {"opensubdiv", run_opensubdiv_catmull_clark, true}};
     } else if (name == "sqrt3") {
       s.levels = levels(4);
-      s.contenders = {{"openmesh", run_openmesh_sqrt3, true, {}, {}, 0},
-                      {"vv", translated("sqrt3", "icosahedron.vvm", scratch.path), true, {}, {}, 0},
-                      {"cgal", run_cgal_sqrt3, true, {}, {}, 0}};
+      s.contenders = {{"openmesh", run_openmesh_sqrt3, true},
+                      {"vv", translated("sqrt3", "icosahedron.vvm", scratch.path), true},
+                      {"cgal", run_cgal_sqrt3, true}};
     } else if (name == "doo_sabin") {
       s.input = &quads;
       warm = &warm_quads;
-      s.contenders = {{"cgal", run_cgal_doo_sabin, true, {}, {}, 0},
-                      {"vv", translated("doo_sabin", "cube.vvm", scratch.path), true, {}, {}, 0}};
+      s.contenders = {{"cgal", run_cgal_doo_sabin, true},
+                      {"vv", translated("doo_sabin", "cube.vvm", scratch.path), true}};
     } else {
       // OpenMesh's is Zorin's modified butterfly, which differs from the
       // original (the example's) around vertices of valence other than 6.
-      s.contenders = {{"openmesh", run_openmesh_butterfly, true, {}, {}, 0},
-                      {"vv", translated("butterfly", "icosahedron.vvm", scratch.path), false, {}, {}, 0}};
+      s.contenders = {{"openmesh", run_openmesh_butterfly, true},
+                      {"vv", translated("butterfly", "icosahedron.vvm", scratch.path), false}};
     }
     agree = run_scheme(s, opt.runs, *warm) && agree;
   }

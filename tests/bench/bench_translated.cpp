@@ -1,12 +1,12 @@
 #include "bench_translated.hpp"
 #include "heap_usage.hpp"
+#include "stopwatch.hpp"
 
 #include <dlfcn.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
 #include <cerrno>
-#include <chrono>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
@@ -90,11 +90,10 @@ bool read_all(int fd, void* data, std::size_t size)
     const vv_plugin_settings settings{model_dir.c_str(), 1, 0, 0};
     plugin->configure(&settings);
     if (const char* e = plugin->start()) return void(problem = e);
-    const auto start = std::chrono::steady_clock::now();
+    const stopwatch timer;
     for (int i = 0; i < levels; ++i)
       if (const char* e = plugin->step()) return void(problem = e);
-    const auto stop = std::chrono::steady_clock::now();
-    result.ms = std::chrono::duration<double, std::milli>(stop - start).count();
+    timer.stop(result);
     result.bytes = heap_in_use() - heap_before;
 
     vv_geometry geometry{};
@@ -107,6 +106,7 @@ bool read_all(int fd, void* data, std::size_t size)
   const std::size_t header[5] = {problem.size(), result.bytes, result.vertices, result.faces, positions.size()};
   write_all(fd, header, sizeof header);
   write_all(fd, &result.ms, sizeof result.ms);
+  write_all(fd, &result.cpu_ms, sizeof result.cpu_ms);
   write_all(fd, problem.data(), problem.size());
   write_all(fd, positions.data(), positions.size() * sizeof(double));
   ::close(fd);
@@ -139,7 +139,8 @@ bench_result run_translated(const translated_model& model, const bench_input& in
   bench_result result;
   std::string problem;
   std::vector<double> positions;
-  bool complete = read_all(fds[0], header, sizeof header) && read_all(fds[0], &result.ms, sizeof result.ms);
+  bool complete = read_all(fds[0], header, sizeof header) && read_all(fds[0], &result.ms, sizeof result.ms) &&
+                  read_all(fds[0], &result.cpu_ms, sizeof result.cpu_ms);
   if (complete) {
     problem.resize(header[0]);
     positions.resize(header[4]);

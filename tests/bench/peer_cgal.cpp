@@ -2,12 +2,12 @@
 // Doo-Sabin) on a Surface_mesh of double points.
 #include "bench_result.hpp"
 #include "heap_usage.hpp"
+#include "stopwatch.hpp"
 
 #include <CGAL/Simple_cartesian.h>
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/subdivision_method_3.h>
 
-#include <chrono>
 #include <stdexcept>
 
 namespace {
@@ -38,10 +38,9 @@ bench_result run(const bench_input& input, int levels, bool keep_positions, Subd
   cgal_mesh mesh;
   build(mesh, input);
 
-  const auto start = std::chrono::steady_clock::now();
+  const stopwatch timer;
   subdivide(mesh, CGAL::parameters::number_of_iterations(static_cast<unsigned int>(levels)));
-  const auto stop = std::chrono::steady_clock::now();
-  result.ms = std::chrono::duration<double, std::milli>(stop - start).count();
+  timer.stop(result);
   result.bytes = heap_in_use() - heap_before;
 
   result.vertices = mesh.number_of_vertices();

@@ -2,6 +2,7 @@
 // butterfly on a TriMesh; Catmull-Clark on a PolyMesh), double precision.
 #include "bench_result.hpp"
 #include "heap_usage.hpp"
+#include "stopwatch.hpp"
 
 #include <OpenMesh/Core/Mesh/PolyMesh_ArrayKernelT.hh>
 #include <OpenMesh/Core/Mesh/TriMesh_ArrayKernelT.hh>
@@ -10,7 +11,6 @@
 #include <OpenMesh/Tools/Subdivider/Uniform/ModifiedButterFlyT.hh>
 #include <OpenMesh/Tools/Subdivider/Uniform/Sqrt3T.hh>
 
-#include <chrono>
 #include <stdexcept>
 #include <string>
 
@@ -48,15 +48,14 @@ bench_result run(const bench_input& input, int levels, bool keep_positions)
   Mesh mesh;
   build(mesh, input);
 
-  const auto start = std::chrono::steady_clock::now();
+  const stopwatch timer;
   {
     Subdivider subdivide;
     subdivide.attach(mesh);
     subdivide(static_cast<std::size_t>(levels));
     subdivide.detach();
   }
-  const auto stop = std::chrono::steady_clock::now();
-  result.ms = std::chrono::duration<double, std::milli>(stop - start).count();
+  timer.stop(result);
   result.bytes = heap_in_use() - heap_before;
 
   result.vertices = mesh.n_vertices();

@@ -6,12 +6,12 @@
 // be refined again.
 #include "bench_result.hpp"
 #include "heap_usage.hpp"
+#include "stopwatch.hpp"
 
 #include <opensubdiv/far/primvarRefiner.h>
 #include <opensubdiv/far/topologyDescriptor.h>
 #include <opensubdiv/far/topologyRefinerFactory.h>
 
-#include <chrono>
 #include <memory>
 #include <stdexcept>
 
@@ -52,7 +52,7 @@ bench_result run(const bench_input& input, int levels, bool keep_positions, Sdc:
   std::unique_ptr<Far::TopologyRefiner> refiner(factory::Create(desc, factory::Options(scheme, options)));
   if (!refiner) throw std::runtime_error("OpenSubdiv rejected the input mesh");
 
-  const auto start = std::chrono::steady_clock::now();
+  const stopwatch timer;
   Far::TopologyRefiner::UniformOptions uniform(levels);
   uniform.fullTopologyInLastLevel = true;
   refiner->RefineUniform(uniform);
@@ -66,8 +66,7 @@ bench_result run(const bench_input& input, int levels, bool keep_positions, Sdc:
     primvars.Interpolate(level, src, dst);
     src = dst;
   }
-  const auto stop = std::chrono::steady_clock::now();
-  result.ms = std::chrono::duration<double, std::milli>(stop - start).count();
+  timer.stop(result);
   result.bytes = heap_in_use() - heap_before;
 
   const Far::TopologyLevel& last = refiner->GetLevel(levels);
