@@ -3,9 +3,10 @@
 //
 // Storage. Vertices live in fixed-size chunks that never move, so a
 // reference to a property stays valid while other vertices are created.
-// Inside a chunk the parts of a vertex (reference count, label, current
-// neighbourhood, current properties) are separate arrays that grow in
-// lockstep: a scan touches only the array it needs. Creating a vertex
+// Inside a chunk the parts of a vertex (current neighbourhood, current
+// properties) are separate arrays that grow in lockstep: a scan touches
+// only the array it needs. Reference counts and labels, which no reference
+// outlives, are flat arrays over all slots (one load fewer per access). Creating a vertex
 // reuses a freed slot or takes the next one; nothing is allocated per
 // vertex.
 //
@@ -128,8 +129,8 @@ class context {
   }
 
   // ---- slot access, used by the algebra (ids come from handles) ----
-  std::uint32_t& refs(std::uint32_t id) noexcept { return at(id).refs[id & mask]; }
-  std::uint32_t label(std::uint32_t id) const noexcept { return at(id).label[id & mask]; }
+  std::uint32_t& refs(std::uint32_t id) noexcept { return refs_[id]; }
+  std::uint32_t label(std::uint32_t id) const noexcept { return labels_[id]; }
   nb_type& nb(std::uint32_t id) noexcept { return at(id).nb[id & mask]; }
   vertex_props& props(std::uint32_t id) noexcept { return at(id).props[id & mask]; }
   //! The old state: what the last synchronise saved, read-only.
@@ -179,8 +180,6 @@ class context {
     vertex_props props[chunk_size];
   };
   struct chunk {
-    std::uint32_t refs[chunk_size];
-    std::uint32_t label[chunk_size];  // 0: the slot is free
     nb_type nb[chunk_size];
     vertex_props props[chunk_size];
     std::unique_ptr<old_block> old;  // null until a vertex of the chunk is synchronised
@@ -190,8 +189,10 @@ class context {
   const chunk& at(std::uint32_t id) const noexcept { return *chunks_[id >> chunk_bits]; }
 
   void add_chunk() {
-    // Value-initialisation zeroes counts, labels and the properties.
+    // Value-initialisation zeroes the properties.
     chunks_.push_back(std::unique_ptr<chunk>(new chunk()));
+    refs_.resize(chunks_.size() * chunk_size, 0u);
+    labels_.resize(chunks_.size() * chunk_size, 0u);
   }
   old_block& old_block_of(std::uint32_t id) {
     chunk& c = at(id);
@@ -206,6 +207,11 @@ class context {
   }
   void free_slot(std::uint32_t id);
 
+  // Counts and labels are one array each over all slots, not per chunk:
+  // every handle copy touches a count, every `p < q` two labels, and no
+  // reference to either outlives a call, so they may move when they grow.
+  std::vector<std::uint32_t> refs_;
+  std::vector<std::uint32_t> labels_;  // 0: the slot is free
   std::vector<std::unique_ptr<chunk>> chunks_;
   std::vector<std::uint32_t> free_slots_;
   std::uint32_t next_slot_ = 1;
@@ -239,9 +245,8 @@ std::uint32_t context<Tr>::allocate_slot() {
     if ((next_slot_ >> chunk_bits) == chunks_.size()) add_chunk();
     id = next_slot_++;
   }
-  chunk& c = at(id);
-  c.label[id & mask] = next_label_++;
-  c.refs[id & mask] = 0;
+  labels_[id] = next_label_++;
+  refs_[id] = 0;
   ++live_;
   return id;
 }
@@ -250,7 +255,7 @@ template <class Tr>
 void context<Tr>::free_slot(std::uint32_t id) {
   chunk& c = at(id);
   std::uint32_t i = id & mask;
-  c.label[i] = 0;
+  labels_[id] = 0;
   c.nb[i].clear();
   c.nb[i].set_flag(nb_type::no_flag);
   // Resetting the properties may release handles they hold.
@@ -298,6 +303,7 @@ std::size_t context<Tr>::collect_garbage() {
 template <class Tr>
 std::size_t context<Tr>::storage_bytes() const noexcept {
   std::size_t bytes = chunks_.size() * sizeof(chunk) +
+                      (refs_.capacity() + labels_.capacity()) * sizeof(std::uint32_t) +
                       chunks_.capacity() * sizeof(std::unique_ptr<chunk>) +
                       free_slots_.capacity() * sizeof(std::uint32_t);
   for (const auto& c : chunks_) {

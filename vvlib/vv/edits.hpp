@@ -66,19 +66,28 @@ void make_neighbourhood(const vertex<Tr>& v, It first, It last, const where& w) 
     entries = spilled.data();
   }
   std::size_t k = 0;
+  // One bit per slot modulo 64: two entries can only be the same vertex
+  // when their bits collide, so most lists skip the pairwise search.
+  std::uint64_t seen = 0;
+  bool maybe_twice = false;
   for (It it = first; it != last; ++it, ++k) {
     const vertex<Tr>& x = *it;
-    if (!x) throw error(w, "make", "the list for " + name_of(v) + " contains the null vertex");
+    if (!x) raise(w, "make", [&] { return "the list for " + name_of(v) + " contains the null vertex"; });
     if (x.ctx() != v.ctx())
-      throw error(w, "make", name_of(x) + " belongs to another context than " + name_of(v));
-    if (x == v) throw error(w, "make", name_of(v) + " cannot be its own neighbour");
+      raise(w, "make", [&] { return name_of(x) + " belongs to another context than " + name_of(v); });
+    if (x == v) raise(w, "make", [&] { return name_of(v) + " cannot be its own neighbour"; });
     entries[k] = entry_traits::make(x.slot());
+    const std::uint64_t bit = std::uint64_t(1) << (x.slot() & 63u);
+    maybe_twice |= (seen & bit) != 0;
+    seen |= bit;
   }
   auto duplicate = [&](std::uint32_t id) {
     throw error(w, "make",
                 name_of(vertex<Tr>::from_slot(v.ctx(), id)) + " is listed twice for " + name_of(v));
   };
-  if (n <= small) {
+  if (!maybe_twice) {
+    // No two entries share a bit: no duplicates.
+  } else if (n <= small) {
     for (std::size_t i = 1; i < n; ++i)
       for (std::size_t j = 0; j < i; ++j)
         if (entry_id(entries[i]) == entry_id(entries[j])) duplicate(entry_id(entries[i]));
