@@ -122,7 +122,7 @@ void make_nb_from(const V& target, const Range& list, where w = where::here()) {
 
 //! `erase x from v;` (no effect when x is not a neighbour)
 template <class V, detail::if_vertex_like<V> = 0>
-void erase_from(const vertex<typename V::traits_type>& x, const V& target,
+VV_INLINE void erase_from(const vertex<typename V::traits_type>& x, const V& target,
                 where w = where::here()) {
   const auto& v = detail::edit_target(target, "erase", w);
   std::int32_t pos = detail::find(detail::mutable_nb(v), detail::slot_in(x, v.ctx()));
@@ -144,7 +144,7 @@ VV_INLINE void replace_in(const vertex<typename V::traits_type>& a, const vertex
 
 //! `splice x after a in v;`
 template <class V, detail::if_vertex_like<V> = 0>
-void splice_after(const vertex<typename V::traits_type>& x, const vertex<typename V::traits_type>& a,
+VV_INLINE void splice_after(const vertex<typename V::traits_type>& x, const vertex<typename V::traits_type>& a,
                   const V& target, where w = where::here()) {
   const auto& v = detail::edit_target(target, "splice", w);
   auto& nb = detail::mutable_nb(v);
@@ -156,7 +156,7 @@ void splice_after(const vertex<typename V::traits_type>& x, const vertex<typenam
 
 //! `splice x before a in v;`
 template <class V, detail::if_vertex_like<V> = 0>
-void splice_before(const vertex<typename V::traits_type>& x,
+VV_INLINE void splice_before(const vertex<typename V::traits_type>& x,
                    const vertex<typename V::traits_type>& a, const V& target,
                    where w = where::here()) {
   const auto& v = detail::edit_target(target, "splice", w);

@@ -126,7 +126,7 @@ class old_vertex {
  public:
   using traits_type = Tr;
 
-  old_vertex(const vertex<Tr>& v, where w) : ctx_(v.ctx()), id_(v.slot()) {
+  VV_INLINE old_vertex(const vertex<Tr>& v, where w) : ctx_(v.ctx()), id_(v.slot()) {
     if (!v) raise(w, "`", [] { return std::string("old state of the null vertex"); });
     if (ctx_->strict_old_state && !synchronised())
       raise(w, "`", [&] { return name_of(v) + " has never been synchronised (strict mode)"; });
