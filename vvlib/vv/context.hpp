@@ -6,9 +6,9 @@
 // Inside a chunk the parts of a vertex (current neighbourhood, current
 // properties) are separate arrays that grow in lockstep: a scan touches
 // only the array it needs. Reference counts and labels, which no reference
-// outlives, are flat arrays over all slots (one load fewer per access). Creating a vertex
-// reuses a freed slot or takes the next one; nothing is allocated per
-// vertex.
+// outlives, are flat arrays over all slots (one load fewer per access).
+// Creating a vertex reuses a freed slot or takes the next one; nothing is
+// allocated per vertex.
 //
 // Old state. The synchronised neighbourhoods and properties of a chunk live
 // in a block of their own, made when the first vertex of the chunk is
