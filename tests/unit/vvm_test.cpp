@@ -4,6 +4,7 @@
 // "file:line: problem" and leave the target mesh exactly as it was.
 #include <vv/vv.hpp>
 #include <vv/io/vvm.hpp>
+#include <vv/neighbourhood_check.hpp>
 
 #include <util/point.hpp>
 
@@ -288,6 +289,35 @@ TEST(VvmWarnings, AMeshFieldTheFileLacksAndACompleteFileIsSilent) {
   PG::mesh P(quiet);
   P.readXMLFile(pyramid_path);
   EXPECT_FALSE(any);
+}
+
+// =====================================================================
+// Edits: a read notes its edits at the line that read the file, which
+// `vvinterpreter --check` names when a neighbourhood is found broken
+// =====================================================================
+
+TEST(VvmEdits, AreNotedAtTheLineThatReadTheFile) {
+  PG::context ctx;
+  ctx.track_edits(true);
+  PG::mesh M(ctx);
+  M.readXMLFile(pyramid_path, vv::where{"model.vvp", 5});
+  EXPECT_TRUE(vv::first_broken_neighbourhood(M, true).problem.empty());
+  // Vertex 2 lists vertex 0, which does not list it back.
+  std::string path = scratch_dir() + "one_way.vvm";
+  std::ofstream(path) << "<mesh>\n  <v pos=\"0 0 0\" nb=\"1\"/>\n  <v pos=\"1 0 0\" nb=\"0 2\"/>\n"
+                         "  <v pos=\"0 1 0\" nb=\"1 0\"/>\n</mesh>\n";
+  M.readXMLFile(path, vv::where{"model.vvp", 9});
+  for (std::uint32_t id : M.slots()) {
+    if (!id) continue;
+    vv::where at = ctx.last_edit(id).at;
+    ASSERT_NE(at.file, nullptr);
+    EXPECT_EQ(std::string(at.file) + ":" + std::to_string(at.line), "model.vvp:9");
+  }
+  vv::broken_neighbourhood broken = vv::first_broken_neighbourhood(M, true);
+  ASSERT_NE(broken.at.file, nullptr);
+  EXPECT_EQ(std::string(broken.at.file) + ":" + std::to_string(broken.at.line), "model.vvp:9");
+  EXPECT_NE(broken.problem.find("(last edits: vertex 9 at model.vvp:9, vertex 7 at model.vvp:9)"), std::string::npos)
+      << broken.problem;
 }
 
 // =====================================================================

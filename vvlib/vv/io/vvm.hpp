@@ -291,8 +291,9 @@ void read_vvm_records(vvm_contents<Tr>& c, const std::vector<pugi::xml_node>& es
 }
 
 // Build: create the vertices in file order and swap the new contents into m.
+// The edits are noted at w, the line that read the file.
 template <class Tr>
-void build_vvm_mesh(mesh<Tr>& m, const vvm_contents<Tr>& c) {
+void build_vvm_mesh(mesh<Tr>& m, const vvm_contents<Tr>& c, const where& w) {
   context<Tr>& ctx = *m.ctx();
   const std::size_t count = c.props.size();
   mesh<Tr> fresh(ctx);
@@ -304,12 +305,12 @@ void build_vvm_mesh(mesh<Tr>& m, const vvm_contents<Tr>& c) {
   for (std::size_t i = 0; i < count; ++i) {
     list.clear();
     for (std::uint32_t j : c.nbs[i]) list.push_back(created[j]);
-    make_nb_from(created[i], list);
-    fresh.add(created[i]);
+    make_nb_from(created[i], list, w);
+    fresh.add(created[i], w);
   }
   for (const auto& r : c.records) {
-    edge(created[r.first], created[r.second]) = r.value;
-    if (r.symmetric) edge(created[r.second], created[r.first]) = r.value;
+    edge(created[r.first], created[r.second], w) = r.value;
+    if (r.symmetric) edge(created[r.second], created[r.first], w) = r.value;
   }
   m = std::move(fresh);
 }
@@ -320,8 +321,11 @@ void build_vvm_mesh(mesh<Tr>& m, const vvm_contents<Tr>& c) {
 //! used in error messages). New vertices are created in file order.
 //! What the file let through without a word is added to notes when given.
 //! The whole file is validated, read and checked before the mesh changes.
+//! w is where the edits are noted (vvinterpreter --check names that line):
+//! the caller's line by default.
 template <class Tr>
-void parse_vvm(mesh<Tr>& m, const io::text_file& file, detail::vvm_notes* notes = nullptr) {
+void parse_vvm(mesh<Tr>& m, const io::text_file& file, detail::vvm_notes* notes = nullptr,
+               where w = where::here()) {
   detail::vvm_notes ignored;
   detail::vvm_notes& said = notes ? *notes : ignored;
   if (!m.ctx())
@@ -341,13 +345,15 @@ void parse_vvm(mesh<Tr>& m, const io::text_file& file, detail::vvm_notes* notes 
   detail::note_missing_fields<typename Tr::mesh_props>(file, "mesh", "meshes", mesh_given, 1, said);
   detail::note_missing_fields<typename Tr::vertex_props>(file, "vertex", "vertices", vertex_given,
                                                          contents.props.size(), said);
-  detail::build_vvm_mesh(m, contents);
+  detail::build_vvm_mesh(m, contents, w);
 }
 
-//! Reads a .vvm file into m (see parse_vvm).
+//! Reads a .vvm file into m (see parse_vvm). A path that is no regular
+//! file, or a file over io::mesh_file_limit, is refused unread.
 template <class Tr>
-void read_vvm(mesh<Tr>& m, const std::string& path, detail::vvm_notes* notes = nullptr) {
-  parse_vvm(m, io::read_text_file(path), notes);
+void read_vvm(mesh<Tr>& m, const std::string& path, detail::vvm_notes* notes = nullptr,
+              where w = where::here()) {
+  parse_vvm(m, io::read_text_file(path, io::mesh_file_limit), notes, w);
 }
 
 //! The .vvm text of a mesh.
@@ -423,7 +429,7 @@ template <class Tr>
 void mesh<Tr>::readXMLFile(const std::string& path, where w) {
   detail::vvm_notes notes;
   at_caller(w, "readXMLFile",
-            [&] { read_vvm(*this, io::resolve(ctx_ ? ctx_->base_dir : std::string(), path), &notes); });
+            [&] { read_vvm(*this, io::resolve(ctx_ ? ctx_->base_dir : std::string(), path), &notes, w); });
   detail::say_notes(*ctx_, notes, w);
 }
 
