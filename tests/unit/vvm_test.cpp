@@ -3,6 +3,7 @@
 // malformed files (tests/data/malformed), each of which must be reported as
 // "file:line: problem" and leave the target mesh exactly as it was.
 #include <vv/vv.hpp>
+#include <vv/io/mesh_io.hpp>
 #include <vv/io/vvm.hpp>
 #include <vv/neighbourhood_check.hpp>
 
@@ -289,6 +290,59 @@ TEST(VvmWarnings, AMeshFieldTheFileLacksAndACompleteFileIsSilent) {
   PG::mesh P(quiet);
   P.readXMLFile(pyramid_path);
   EXPECT_FALSE(any);
+}
+
+// A field the program computes itself (`computed double radius;` in a
+// .vvp) is no news when a file lacks it, wholly or in part.
+struct WithComputed {
+  Pt pos;
+  double radius = 0;
+  int ring = 0;
+  static constexpr const char* vv_computed_fields[] = {"radius", "ring"};
+  template <class F>
+  void vv_fields(F&& f) {
+    f("pos", pos);
+    f("radius", radius);
+    f("ring", ring);
+  }
+};
+using CG = vv::graph<WithComputed>;
+
+TEST(VvmWarnings, AComputedFieldTheFileLacksIsNoWarning) {
+  EXPECT_TRUE(vv::is_computed_field<WithComputed>("radius"));
+  EXPECT_FALSE(vv::is_computed_field<WithComputed>("pos"));
+  EXPECT_FALSE(vv::is_computed_field<VP>("c"));
+  CG::context ctx;
+  std::vector<std::string> said;
+  ctx.warning_sink = [&](const std::string& m) { said.push_back(m); };
+  CG::mesh M(ctx);
+  M.readXMLFile(pyramid_path, vv::where{"model.vvp", 3});
+  EXPECT_EQ(M.size(), 6u);
+  std::string path = scratch_dir() + "some_rings.vvm";
+  std::ofstream(path) << "<mesh>\n  <v pos=\"0 0 0\" ring=\"2\" nb=\"\"/>\n  <v pos=\"1 0 0\" nb=\"\"/>\n</mesh>\n";
+  M.readXMLFile(path, vv::where{"model.vvp", 4});
+  EXPECT_EQ(said, std::vector<std::string>{});
+  // What the file gives is read all the same.
+  std::vector<int> rings;
+  for (CG::vertex v : M) rings.push_back(v->ring);
+  EXPECT_EQ(rings, (std::vector<int>{2, 0}));
+}
+
+// A warning is said once in a run: the same file read again, into other
+// meshes, under another spelling of its path, or by readFile.
+TEST(VvmWarnings, AreSaidOnceAcrossReadsMeshesAndSpellings) {
+  G::context ctx;
+  std::vector<std::string> said;
+  ctx.warning_sink = [&](const std::string& m) { said.push_back(m); };
+  const std::string folder = VV_SOURCE_DIR "/models";
+  G::mesh A(ctx), B(ctx);
+  A.readXMLFile(pyramid_path, vv::where{"model.vvp", 3});
+  A.readXMLFile(pyramid_path, vv::where{"model.vvp", 4});
+  B.readXMLFile(folder + "/./pyramid.vvm", vv::where{"model.vvp", 5});
+  B.readXMLFile(folder + "/../models/pyramid.vvm", vv::where{"model.vvp", 6});
+  B.readFile(pyramid_path, vv::where{"model.vvp", 7});
+  EXPECT_EQ(said.size(), 3u);  // generation, name, c: each once
+  for (const std::string& m : said) EXPECT_NE(m.find("(read at model.vvp:3)"), std::string::npos) << m;
 }
 
 // =====================================================================

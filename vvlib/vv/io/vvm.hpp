@@ -10,12 +10,14 @@
 
 #include <cstdint>
 #include <cstring>
+#include <filesystem>
 #include <functional>
 #include <limits>
 #include <map>
 #include <set>
 #include <sstream>
 #include <string>
+#include <system_error>
 #include <vector>
 
 #include <pugixml.hpp>
@@ -51,6 +53,9 @@ bool set_field(P& props, const char* name, const char* text, Fail&& fail) {
 struct vvm_notes {
   std::vector<std::pair<std::string, std::string>> said;  // key, message
   std::set<std::string> keys;
+  // The file's one name in keys (links and ".." resolved), so that a file
+  // read under two spellings still warns once.
+  std::string file;
   void add(std::string key, std::string message) {
     if (keys.insert(key).second) said.emplace_back(std::move(key), std::move(message));
   }
@@ -77,14 +82,15 @@ void set_fields_from(P& props, const pugi::xml_node& node, const io::text_file& 
       ++given[a.name()];
       continue;
     }
-    notes.add(file.name() + "|unknown|" + element + "|" + a.name(),
+    notes.add(notes.file + "|unknown|" + element + "|" + a.name(),
               file.name() + ":" + std::to_string(file.line_at(node.offset_debug())) +
                   ": warning: the attribute " + a.name() + " of <" + element +
                   "> matches no field of the program's " + kind_of(element) + " and is ignored");
   }
 }
 
-// A field of P that fewer than `of` elements gave keeps its default there.
+// A field of P that fewer than `of` elements gave keeps its default there
+// (said unless the program computes the field itself).
 template <class P>
 void note_missing_fields(const io::text_file& file, const char* what, const char* plural,
                          const std::map<std::string, std::size_t>& given, std::size_t of,
@@ -94,13 +100,13 @@ void note_missing_fields(const io::text_file& file, const char* what, const char
   for_each_field(probe, [&](const char* field, const auto&) {
     auto it = given.find(field);
     std::size_t n = it == given.end() ? 0 : it->second;
-    if (n == of) return;
+    if (n == of || is_computed_field<P>(field)) return;
     std::string head = file.name() + ": warning: the " + what + " field " + field;
     std::string tail = n == 0 ? (of == 1 ? " is not in the file and keeps its default value"
                                          : " is in no " + std::string(what) + " of the file and keeps its default value")
                               : " is missing from " + std::to_string(of - n) + " of the " + std::to_string(of) +
                                     " " + plural + ", which keep its default value";
-    notes.add(file.name() + "|missing|" + what + "|" + field, head + tail);
+    notes.add(notes.file + "|missing|" + what + "|" + field, head + tail);
   });
 }
 
@@ -331,6 +337,9 @@ void parse_vvm(mesh<Tr>& m, const io::text_file& file, detail::vvm_notes* notes 
   if (!m.ctx())
     throw error(file.name(), 0,
                 "the mesh has no context to create vertices in (construct it with mesh(context))");
+  std::error_code ec;
+  std::filesystem::path one_name = std::filesystem::weakly_canonical(file.name(), ec);
+  said.file = ec ? file.name() : one_name.string();
   pugi::xml_document doc;
   pugi::xml_node root = detail::vvm_root(doc, file);
 
