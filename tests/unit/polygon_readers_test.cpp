@@ -198,8 +198,8 @@ TEST(StlReader, EachFaultHasItsReason) {
 
 TEST(OffReader, ReadsColoursAndCountsOnTheHeaderLine) {
   vv::polygon_soup soup = read("coloured.off",
-                               "COFF 4 1 0\n# vertices\n0 0 0 1 0 0 1\n1 0 0 1 0 0 1\n1 1 0 1 0 0 1\n0 1 0 1 0 0 1\n"
-                               "4 0 1 2 3 255 0 0\n");
+                               "COFF 4 1 0\n# vertices\n0 0 0 1 0 0 1\n1 0 0 1 0 0 1#red\n1 1 0 1 0 0 1 # red\n"
+                               "0 1 0 1 0 0 1\n4 0 1 2 3 255 0 0\n");
   EXPECT_EQ(soup.points, (Points{{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}}));
   EXPECT_EQ(soup.faces, (Faces{{0, 1, 2, 3}}));
 }
@@ -214,7 +214,9 @@ TEST(OffReader, EachFaultHasItsLineAndReason) {
       {"", "bad.off: empty file (expected an OFF header)"},
       {"OFF\n3\n", "bad.off:2: expected the counts 'vertices faces edges' after the header, found 1 word"},
       {"OFF\n3 x 0\n", "bad.off:2: the count of faces is 'x', not a whole number of 0 or more"},
-      {"OFF\n3 0 0\n0 0 0\n1 0 0\n0 1 0\n", "bad.off:2: the header announces no faces (vv reads a polygon mesh)"},
+      {"OFF\n3 0 0\n0 0 0\n1 0 0\n0 1 0\n",
+       "bad.off:2: no faces: the header announces 3 vertices and 0 faces (points only); vv reads polygon meshes from "
+       ".off files"},
       {"OFF\n3 1 0\n0 0 0\n1 0 0\n", "bad.off:4: the file ends after 2 vertices; the header announces 3 vertices and 1 faces"},
       {"OFF\n3 1 0\n0 0 0\n1 0\n0 1 0\n3 0 1 2\n", "bad.off:4: vertex 1 has 2 coordinates; a vertex needs 3 (x y z)"},
       {head + "3 0 1 9\n", "bad.off:6: face 0: vertex 9 does not exist: the file has 3 vertices, numbered from 0"},
@@ -255,7 +257,12 @@ TEST(PlyReader, EachFaultHasItsReason) {
   EXPECT_EQ(read_error("bad.ply", "ply\nformat ascii 1.0\nelement vertex 1\nproperty double x\nend_header\n0\n"),
             "bad.ply: no vertex element with properties x, y and z in the header");
   EXPECT_EQ(read_error("bad.ply", ascii_ply("", 0)),
-            "bad.ply: no faces (the header has no face element, or announces 0 faces)");
+            "bad.ply: no faces: the header announces 3 vertices and 0 faces (points only); vv reads polygon meshes "
+            "from .ply files");
+  EXPECT_EQ(read_error("bad.ply", "ply\nformat ascii 1.0\nelement vertex 1\nproperty double x\nproperty double y\n"
+                                  "property double z\nend_header\n0 0 0\n"),
+            "bad.ply: no faces: the header announces 1 vertex and no face element (points only); vv reads polygon "
+            "meshes from .ply files");
   EXPECT_EQ(read_error("bad.ply", ascii_ply("3 0 1 9\n", 1)),
             "bad.ply: face 0: vertex 9 does not exist: the file has 3 vertices, numbered from 0");
   EXPECT_EQ(read_error("bad.ply", ascii_ply("3 0 1 -1\n", 1)), "bad.ply: face 0: -1 is not a vertex index");

@@ -89,7 +89,9 @@ class off_reader {
                   std::to_string(counts.size()) + (counts.size() == 1 ? " word" : " words"));
     const std::uint64_t vertices = count(counts[0], "vertices"), faces = count(counts[1], "faces");
     if (counts.size() == 3) count(counts[2], "edges");
-    if (faces == 0) lines_.fail("the header announces no faces (vv reads a polygon mesh)");
+    if (faces == 0)
+      lines_.fail("no faces: the header announces " + count_text(vertices, "vertex", "vertices") +
+                  " and 0 faces (points only); vv reads polygon meshes from .off files");
 
     polygon_soup soup;
     soup.points.reserve(static_cast<std::size_t>(std::min<std::uint64_t>(vertices, 1u << 20)));

@@ -83,7 +83,9 @@ polygon_soup read_ply(const std::string& path, const std::string& bytes) {
   if (!vertices || !vertices->has("x") || !vertices->has("y") || !vertices->has("z"))
     throw error(path, 0, "no vertex element with properties x, y and z in the header");
   if (!faces || faces->count == 0)
-    throw error(path, 0, "no faces (the header has no face element, or announces 0 faces)");
+    throw error(path, 0, "no faces: the header announces " + count_text(vertices->count, "vertex", "vertices") + " and " +
+                             (faces ? "0 faces" : "no face element") +
+                             " (points only); vv reads polygon meshes from .ply files");
   if (!faces->has("vertex_indices") && !faces->has("vertex_index"))
     throw error(path, 0, "the face element has no list property vertex_indices (or vertex_index)");
 

@@ -15,8 +15,8 @@
 
 namespace vv::formats {
 
-//! The lines of a text, each split into words, comments (from a word that
-//! starts with '#') left out. A line ending in a backslash goes on with the
+//! The lines of a text, each split into words, comments (from a '#' to the
+//! end of the line, also right after a word: `0.9#red`) left out. A line ending in a backslash goes on with the
 //! next one when `continuations` is set (OBJ).
 class line_scanner {
  public:
@@ -61,7 +61,7 @@ class line_scanner {
       if (i >= line.size()) break;
       if (line[i] == '#') return true;
       std::size_t start = i;
-      while (i < line.size() && !is_blank(line[i])) ++i;
+      while (i < line.size() && !is_blank(line[i]) && line[i] != '#') ++i;
       words_.push_back(line.substr(start, i - start));
     }
     return false;
@@ -104,6 +104,11 @@ inline bool read_number(std::string_view word, double& out) {
   if (begin != end && *begin == '+') ++begin;
   auto [ptr, ec] = std::from_chars(begin, end, out);
   return ec == std::errc() && ptr == end && ptr != begin;
+}
+
+//! "1 vertex", "3 vertices".
+inline std::string count_text(std::uint64_t n, const char* one, const char* many) {
+  return std::to_string(n) + " " + (n == 1 ? one : many);
 }
 
 //! "'abc'" for messages, cut short when the word is long.
