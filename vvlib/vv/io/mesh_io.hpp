@@ -1,6 +1,7 @@
 // read_mesh / write_mesh: one entry point per direction, choosing the
-// format by the file's extension (.vvm, .obj, .off, .ply, .stl), and the
-// mesh members readFile / writeFile that programs call.
+// format by the file's extension (.vvm, .obj, .off, .ply, .stl; .vtp for
+// ParaView, written only, vv/io/vtp.hpp), and the mesh members readFile /
+// writeFile that programs call.
 //
 // A written polygon file lists the members in iteration order and the face
 // orbits (vv/faces.hpp) as faces; orbits longer than max_face are holes
@@ -22,6 +23,7 @@
 #include "from_faces.hpp"
 #include "polygon_files.hpp"
 #include "positions.hpp"
+#include "vtp.hpp"
 #include "vvm.hpp"
 
 namespace vv {
@@ -41,6 +43,8 @@ void read_mesh(mesh<Tr>& m, const std::string& path, detail::vvm_notes* notes = 
                where w = where::here()) {
   std::string ext = io::extension_of(path);
   if (ext == ".vvm") return read_vvm(m, path, notes, w);
+  if (ext == ".vtp")
+    throw error(path, 0, "vv writes .vtp files (for ParaView) but does not read them; it reads .vvm .obj .off .ply .stl");
   polygon_soup soup = read_polygon_file(path);
   build_from_faces(m, soup.points, soup.faces, path, w);
 }
@@ -50,6 +54,7 @@ template <class Tr>
 void write_mesh(const mesh<Tr>& m, const std::string& path, const export_options& opt = {}) {
   std::string ext = io::extension_of(path);
   if (ext == ".vvm") return write_vvm(m, path);
+  if (ext == ".vtp") return write_vtp(m, path, opt.max_face);
   if (!detail::is_polygon_format(ext)) detail::unknown_format(path);
   if constexpr (!detail::has_pos<typename Tr::vertex_props>::value)
     throw error(path, 0, "the vertices have no 'pos' property, so a " + ext.substr(1) +

@@ -44,7 +44,7 @@ inline bool is_polygon_format(const std::string& ext) {
 }
 [[noreturn]] inline void unknown_format(const std::string& path) {
   throw error(path, 0, "unknown mesh format \"" + io::extension_of(path) +
-                           "\" (known: .vvm .obj .off .ply .stl)");
+                           "\" (known: .vvm .obj .off .ply .stl; .vtp for writing)");
 }
 
 }  // namespace detail
