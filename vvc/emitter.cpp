@@ -225,7 +225,7 @@ class emitter {
          "    vv_entry_configure,\n"
          "    vv_entry_reread,\n"
          "    vv_entry_proxy,\n"
-         "    vv_entry_union_vvm,\n"
+         "    vv_entry_union_file,\n"
          "    vv_entry_union_geometry,\n"
          "    vv_entry_check,\n"
          "    vv_entry_describe_vertex,\n"
@@ -235,14 +235,16 @@ class emitter {
     w_.generated(s);
   }
 
-  // The global meshes (vv_plugin::meshes): name, size, .vvm writer, polygons.
+  // The global meshes (vv_plugin::meshes): name, size, .vvm/.vtp writer, polygons.
   std::string mesh_table() const {
     if (p_.global_meshes.empty()) return "";
     std::string s = "static const vv_mesh_entry vv_mesh_table[] = {\n";
     for (const token* m : p_.global_meshes) {
       std::string n(m->text);
       s += "    {\"" + n + "\", []() -> std::size_t { return " + n + ".size(); },\n"
-           "     [](const char* vv_path) { return vv::plugin::write_vvm(vv_exchange, " + n + ", vv_path); },\n"
+           "     [](const char* vv_path, std::size_t vv_max_face) {\n"
+           "       return vv::plugin::write_file(vv_exchange, " + n + ", vv_path, vv_max_face);\n"
+           "     },\n"
            "     [](std::size_t vv_max_face, vv_geometry* vv_out) {\n"
            "       return vv::plugin::geometry(vv_exchange, " + n + ", vv_max_face, vv_out);\n"
            "     }},\n";
@@ -258,7 +260,7 @@ class emitter {
       s += "static const char* vv_entry_check() { return nullptr; }\n";
       s += "static const char* vv_entry_describe_vertex(unsigned, const char**) {\n"
            "  return \"the model has no global mesh\";\n}\n";
-      s += "static const char* vv_entry_union_vvm(const char* const*, std::size_t, const char*) {\n"
+      s += "static const char* vv_entry_union_file(const char* const*, std::size_t, std::size_t, const char*) {\n"
            "  return \"the model has no global mesh\";\n}\n";
       s += "static const char* vv_entry_union_geometry(const char* const*, std::size_t, std::size_t, vv_geometry*) {\n"
            "  return \"the model has no global mesh\";\n}\n";
@@ -273,8 +275,9 @@ class emitter {
     s += "static const char* vv_entry_check() { return vv::plugin::check(vv_exchange, vv_named_meshes); }\n";
     s += "static const char* vv_entry_describe_vertex(unsigned vv_label, const char** vv_text) {\n"
          "  return vv::plugin::describe_vertex(vv_exchange, vv_named_meshes, vv_label, vv_text);\n}\n";
-    s += "static const char* vv_entry_union_vvm(const char* const* vv_names, std::size_t vv_n, const char* vv_path) {\n"
-         "  return vv::plugin::union_vvm(vv_exchange, vv_named_meshes, vv_names, vv_n, vv_path);\n}\n";
+    s += "static const char* vv_entry_union_file(const char* const* vv_names, std::size_t vv_n,\n"
+         "                                       std::size_t vv_max_face, const char* vv_path) {\n"
+         "  return vv::plugin::union_file(vv_exchange, vv_named_meshes, vv_names, vv_n, vv_max_face, vv_path);\n}\n";
     s += "static const char* vv_entry_union_geometry(const char* const* vv_names, std::size_t vv_n,\n"
          "                                           std::size_t vv_max_face, vv_geometry* vv_out) {\n"
          "  return vv::plugin::union_geometry(vv_exchange, vv_named_meshes, vv_names, vv_n, vv_max_face, vv_out);\n}\n";

@@ -50,7 +50,7 @@ int main(int argc, char** argv) {
     for (std::size_t i = 0; i < model.mesh_count; ++i)
       if (write_mesh == model.meshes[i].name) {
         found = true;
-        if (const char* e = model.meshes[i].write_vvm(write_path.c_str())) error = e;
+        if (const char* e = model.meshes[i].write_file(write_path.c_str(), 0)) error = e;
       }
     if (!found) error = "no global mesh named " + write_mesh;
   }

@@ -7,7 +7,10 @@
 
 namespace vvi {
 
-bool is_vvm_path(const std::string& path) { return vv::io::extension_of(path) == ".vvm"; }
+bool is_written_by_model(const std::string& path) {
+  std::string ext = vv::io::extension_of(path);
+  return ext == ".vvm" || ext == ".vtp";
+}
 
 std::string export_polygons(const vv_geometry& g, const std::string& path, const std::string& what) {
   try {

@@ -1,5 +1,6 @@
-// Writing a model's global meshes: .vvm through the model itself (it knows
-// the properties), polygon formats here from the meshes' face orbits.
+// Writing a model's global meshes: .vvm and .vtp through the model itself
+// (it knows the properties), polygon formats here from the meshes' face
+// orbits.
 #pragma once
 
 #include <string>
@@ -12,8 +13,8 @@ namespace vvi {
 //! error. `what` names the meshes in messages ("mesh S", "meshes J, C").
 std::string export_polygons(const vv_geometry& g, const std::string& path, const std::string& what);
 
-//! True for the extensions export_polygons writes; .vvm is written by the
-//! model.
-bool is_vvm_path(const std::string& path);
+//! True for the formats the model writes itself (vv_mesh_entry::write_file:
+//! .vvm, .vtp); export_polygons writes the others.
+bool is_written_by_model(const std::string& path);
 
 }  // namespace vvi

@@ -183,8 +183,8 @@ std::string model_runner::export_to(const std::string& path, const std::vector<s
 std::string model_runner::write_meshes(const std::string& path, const std::vector<std::string>& names) const {
   if (names.size() > 1) {
     std::vector<const char*> c = c_names(names);
-    if (is_vvm_path(path)) {
-      const char* e = model_->model().union_vvm(c.data(), c.size(), path.c_str());
+    if (is_written_by_model(path)) {
+      const char* e = model_->model().union_file(c.data(), c.size(), max_face(), path.c_str());
       return e ? e : "";
     }
     vv_geometry g{};
@@ -193,8 +193,8 @@ std::string model_runner::write_meshes(const std::string& path, const std::vecto
   }
   const vv_mesh_entry* m = model_->mesh(names.empty() ? "" : names[0]);
   if (!m) return o_.model + ": the model has no global mesh to export";
-  if (is_vvm_path(path)) {
-    const char* e = m->write_vvm(path.c_str());
+  if (is_written_by_model(path)) {
+    const char* e = m->write_file(path.c_str(), max_face());
     return e ? e : "";
   }
   vv_geometry g{};

@@ -35,7 +35,9 @@
 #include "proxy.hpp"
 
 // 5: one descriptor (vv_plugin_descriptor) instead of one symbol per entry.
-#define VV_PLUGIN_ABI_VERSION 5
+// 6: write_file and union_file (were write_vvm, union_vvm) write .vtp too,
+//    and take max_face.
+#define VV_PLUGIN_ABI_VERSION 6
 //! The one symbol a model exports.
 #define VV_PLUGIN_DESCRIPTOR_SYMBOL "vv_plugin_descriptor"
 #define VV_PLUGIN_EXPORT extern "C" __attribute__((visibility("default")))
@@ -87,8 +89,10 @@ struct vv_param_entry {
 struct vv_mesh_entry {
   const char* name;
   std::size_t (*vertex_count)(void);
-  //! Writes the mesh as .vvm; NULL or the error.
-  const char* (*write_vvm)(const char* path);
+  //! Writes the mesh to a file of a format that holds its properties,
+  //! .vvm or .vtp by the extension (the host writes the other formats from
+  //! geometry); max_face as for geometry. NULL or the error.
+  const char* (*write_file)(const char* path, std::size_t max_face);
   //! Face orbits of at most max_face corners (0: no limit); NULL or the error.
   const char* (*geometry)(std::size_t max_face, vv_geometry* out);
 };
@@ -123,8 +127,8 @@ struct vv_plugin {
   const char* (*reread)(void);
   vv::proxy* (*proxy)(void);
   //! The union of the named global meshes (a vertex in several counts
-  //! once), written as .vvm or given as polygons.
-  const char* (*union_vvm)(const char* const* names, std::size_t count, const char* path);
+  //! once), written as vv_mesh_entry::write_file does or given as polygons.
+  const char* (*union_file)(const char* const* names, std::size_t count, std::size_t max_face, const char* path);
   const char* (*union_geometry)(const char* const* names, std::size_t count, std::size_t max_face,
                                 vv_geometry* out);
   //! The first broken neighbourhood of any global mesh, with the lines that
@@ -219,9 +223,16 @@ void configure(context<Tr>& ctx, const vv_plugin_settings& s, const char* source
   srand48(static_cast<long>(s.seed));
 }
 
+// The export options of a host's max_face (0: no limit).
+inline export_options export_options_for(std::size_t max_face) {
+  export_options opt;
+  if (max_face) opt.max_face = max_face;
+  return opt;
+}
+
 template <class Tr>
-const char* write_vvm(exchange& x, const mesh<Tr>& m, const char* path) noexcept {
-  return guarded(x, [&] { vv::write_vvm(m, path); });
+const char* write_file(exchange& x, const mesh<Tr>& m, const char* path, std::size_t max_face) noexcept {
+  return guarded(x, [&] { vv::write_mesh(m, path, export_options_for(max_face)); });
 }
 
 template <class Tr>
@@ -295,9 +306,9 @@ mesh<Tr> union_of(const named_mesh<Tr> (&all)[N], const char* const* names, std:
 }
 
 template <class Tr, std::size_t N>
-const char* union_vvm(exchange& x, const named_mesh<Tr> (&all)[N], const char* const* names, std::size_t count,
-                      const char* path) noexcept {
-  return guarded(x, [&] { vv::write_vvm(union_of(all, names, count), path); });
+const char* union_file(exchange& x, const named_mesh<Tr> (&all)[N], const char* const* names, std::size_t count,
+                       std::size_t max_face, const char* path) noexcept {
+  return guarded(x, [&] { vv::write_mesh(union_of(all, names, count), path, export_options_for(max_face)); });
 }
 
 template <class Tr, std::size_t N>
