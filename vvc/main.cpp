@@ -7,11 +7,13 @@
 // the source line and a caret. On any error the exit status is 1 and no
 // output file is left (a stale one from an earlier run is removed). An
 // output that would overwrite the program or a file it includes is
-// refused (exit status 2). How the output is written: output_file.hpp.
+// refused (exit status 2). How the output is written: vv/io/output_file.hpp.
 #include <iostream>
+#include <optional>
 #include <string>
 
-#include "output_file.hpp"
+#include <vv/io/output_file.hpp>
+
 #include "translate.hpp"
 
 namespace {
@@ -66,19 +68,22 @@ int main(int argc, char** argv) {
   const bool to_stdout = output == "-";
   // Checked before translating, so that no path below (not even removing a
   // stale output after an error) can touch the program.
-  if (!to_stdout && vvc::same_file(output, input)) {
+  if (!to_stdout && vv::io::same_file(output, input)) {
     std::cerr << "vvc: refusing to write over the program: -o '" << output << "' is the input file '" << input
               << "'\n";
     return 2;
   }
-  const vvc::output_file out = to_stdout ? vvc::output_file{} : vvc::plan_output(output);
-  if (!to_stdout && out.kind == vvc::output_file::refused) {
-    std::cerr << output << ": error: cannot write file: " << out.why << "\n";
-    return 1;
+  std::optional<vv::io::output_file> out;
+  if (!to_stdout) {
+    out.emplace(output);
+    if (!out->problem().empty()) {
+      std::cerr << output << ": error: cannot write file: " << out->problem() << "\n";
+      return 1;
+    }
   }
   std::string unreadable;
   vvc::translation t = vvc::translate_file(input, &unreadable);
-  if (std::string source = to_stdout ? "" : vvc::source_at(output, t.sources.paths()); !source.empty()) {
+  if (std::string source = to_stdout ? "" : vv::io::file_among(output, t.sources.paths()); !source.empty()) {
     std::cerr << "vvc: refusing to write over the program: -o '" << output << "' is '" << source
               << "', which the program includes\n";
     return 2;
@@ -86,15 +91,14 @@ int main(int argc, char** argv) {
   if (!t.ok) {
     if (!unreadable.empty()) std::cerr << input << ": error: cannot read file: " << unreadable << "\n";
     t.diag.print(std::cerr);
-    if (!to_stdout) vvc::remove_stale_output(out);
+    if (out) out->remove_previous();
     return 1;
   }
   if (to_stdout) {
     std::cout << t.cpp;
     return std::cout.flush() ? 0 : 1;
   }
-  std::string why = vvc::write_output(out, t.cpp);
-  if (!why.empty()) {
+  if (std::string why = out->write(t.cpp); !why.empty()) {
     std::cerr << output << ": error: cannot write file: " << why << "\n";
     return 1;
   }

@@ -62,6 +62,56 @@ TEST(Lifecycle, ACrashNamesTheLineAndTheStepAndKeepsTheOutput) {
   EXPECT_EQ(r.out, "step 1\npartial line of step 1\nstep 2\npartial line of step 2") << report(r);
 }
 
+// binutils 2.40's addr2line read the DWARF 5 line tables g++ 12 writes
+// by default as naming the translated .cpp for the first function in the
+// model's .text: a crash there fell back to the bare model name. Models
+// are compiled with DWARF 4 line tables, which it reads right.
+TEST(Lifecycle, ACrashInTheModelsFirstFunctionNamesItsLine) {
+  const std::string model = fault_models + "crash_in_first_function.vvp";
+  test_run::result r = batch({"--quiet", "--steps", "1", model});
+  ASSERT_FALSE(r.timed_out) << report(r);
+  EXPECT_EQ(r.status, 1) << report(r);
+  std::vector<std::string> err = lines_of(r.err);
+  ASSERT_EQ(err.size(), 3u) << report(r);
+  EXPECT_EQ(err[0], "vvinterpreter: " + model + ":11: crashed with SIGSEGV in step 1") << report(r);
+  EXPECT_EQ(err[1], "  " + model + ":11 in write_nowhere(int)") << report(r);
+  EXPECT_EQ(err[2], "  " + model + ":15 in the step block") << report(r);
+}
+
+// The interpreter loads a private copy of the plugin from $TMPDIR. It was
+// named "vv-model-PID-N.so": two containers with their own PID namespaces
+// and one /tmp wrote over each other's copy. Its name now holds the PID
+// namespace and random letters (made with O_EXCL), and it is removed once
+// loaded; copies of dead processes of this namespace go with the next load,
+// those of other namespaces stay.
+TEST(Lifecycle, ThePluginsPrivateCopyIsUniqueAndRemovedOnceLoaded) {
+  std::string d = fresh_dir("plugin_copy");
+  std::string link = fs::read_symlink("/proc/self/ns/pid").string();  // "pid:[4026531836]"
+  std::ostringstream ns;
+  ns << std::hex << std::stoull(link.substr(link.find('[') + 1));
+  pid_t gone = fork();
+  if (gone == 0) _exit(0);
+  waitpid(gone, nullptr, 0);
+  std::string dead = ".vv-model-1.vvtmp-" + std::to_string(gone) + "-" + ns.str() + "-AbCdEf.so";
+  std::string elsewhere = ".vv-model-1.vvtmp-" + std::to_string(gone) + "-1-AbCdEf.so";
+  write_text(d + dead, "a dead run's copy");
+  write_text(d + elsewhere, "another container's copy");
+  std::vector<std::string> argv = {"env", "TMPDIR=" + d.substr(0, d.size() - 1)};
+  for (const std::string& a :
+       test_run::interpreter({"--batch", "--quiet", "--steps", "0", fault_models + "prints_where_it_is_loaded_from.vvp"}))
+    argv.push_back(a);
+  test_run::result r = test_run::run(argv, 280);
+  ASSERT_EQ(r.status, 0) << report(r);
+  const std::string prefix = "loaded from " + d + ".vv-model-1.vvtmp-";
+  ASSERT_EQ(r.out.rfind(prefix, 0), 0u) << report(r);
+  std::string id = r.out.substr(prefix.size());  // "PID-NS-XXXXXX.so (removed)\n"
+  EXPECT_TRUE(has(id, "-" + ns.str() + "-")) << r.out;
+  EXPECT_EQ(id.substr(id.find('-', id.find('-') + 1) + 7), ".so (removed)\n") << r.out;
+  std::vector<std::string> left;
+  for (const auto& e : fs::directory_iterator(d)) left.push_back(e.path().filename().string());
+  EXPECT_EQ(left, std::vector<std::string>{elsewhere});
+}
+
 // Regression (defect 4): an endless step froze everything; now
 // --step-timeout ends it with a message naming the step and the line it
 // was at, with the model's stack as a crash report gives it.

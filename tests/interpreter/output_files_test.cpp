@@ -1,5 +1,5 @@
 // The files batch writes for the user (--export, --screenshot, --plots;
-// runner/output_file.hpp): each run writes a temporary of its own, so two
+// runner/output_file.hpp over vv/io/output_file.hpp): each run writes a temporary of its own, so two
 // runs never lose each other's work; a symbolic link, a device or a FIFO
 // is written through and stays what it was; a name that fits is written
 // whatever its length; and a run that is killed leaves nothing behind, with
@@ -124,7 +124,7 @@ TEST(OutputFiles, SymbolicLinksAreWrittenThroughAndLoopsRefused) {
   test_run::result looped = export_loop(d + "a.obj");
   EXPECT_EQ(looped.status, 1) << report(looped);
   EXPECT_EQ(looped.err,
-            "vvinterpreter: " + d + "a.obj: cannot write through the symbolic link: it is part of a loop of links\n")
+            "vvinterpreter: " + d + "a.obj: cannot write file: the symbolic link is part of a loop of links\n")
       << report(looped);
   EXPECT_TRUE(is_symlink(d + "a.obj") && is_symlink(d + "b.obj"));
 }

@@ -238,6 +238,24 @@ TEST(Supervision, ExitInAStepIsAnErrorNamingTheStepAndTheLine) {
       << report(three);
 }
 
+// --in-process (no supervisor; --debug runs the same way) ended with the
+// model's own status and no word after exit() in a block. It says what
+// batch says, with the same status.
+TEST(Supervision, ExitInAStepIsAnErrorInProcessToo) {
+  test_run::result zero = fault(9, {"--steps", "3", "--in-process"});
+  ASSERT_FALSE(zero.timed_out) << report(zero);
+  EXPECT_EQ(zero.status, 1) << report(zero);
+  EXPECT_EQ(zero.out, "step 1\n");
+  EXPECT_EQ(zero.err, "vvinterpreter: " + at("std::exit(0)") + ": the model called exit(0) in step 1, before the run was done\n" +
+                          stack_from("std::exit(0)"))
+      << report(zero);
+  test_run::result three = fault(3, {"--steps", "3", "--in-process"});
+  EXPECT_EQ(three.status, 1) << report(three);
+  EXPECT_EQ(three.err, "vvinterpreter: " + at("std::exit(3)") + ": the model called exit(3) in step 1, before the run was done\n" +
+                           stack_from("std::exit(3)"))
+      << report(three);
+}
+
 // _exit runs nothing on its way out, so there is no line; the block and
 // the step are still known.
 TEST(Supervision, UnderscoreExitInAStepIsAnErrorNamingTheStep) {

@@ -44,8 +44,9 @@ bool instrument_models() {
 // match for the header to be used).
 std::vector<std::string> common_flags(const build_settings& s, const std::string& include) {
   // Line tables always (crash reports name .vvp lines); --debug: all of it.
+  // DWARF 4: binutils 2.40's addr2line names the .cpp for a model's first code in DWARF 5.
   std::vector<std::string> f = {"-std=c++17", s.debug ? "-O0" : "-O" + std::to_string(s.optimization),
-                                s.debug ? "-g" : "-g1", "-fPIC",
+                                s.debug ? "-g" : "-g1", "-gdwarf-4", "-fPIC",
                                 "-fvisibility=hidden", "-fvisibility-inlines-hidden",
                                 // so that unloading a model really unloads it (rewind, reload)
                                 "-fno-gnu-unique"};

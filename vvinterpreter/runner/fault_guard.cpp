@@ -18,8 +18,6 @@
 #include <exception>
 #include <typeinfo>
 
-#include <vv/io/files.hpp>
-
 namespace vvi::fault_guard {
 
 namespace {
@@ -38,10 +36,10 @@ volatile sig_atomic_t samples_sent = 0;
 volatile sig_atomic_t last_sample = 0;
 volatile sig_atomic_t sample_number = 0;  // of the request being answered
 
-// The temporaries being written, each with the one vvlib writes before
-// renaming it (vv::io::temporary_beside): unlinked on a termination signal.
+// The temporaries being written (runner/output_file.hpp): unlinked on a
+// termination signal.
 constexpr int max_writing = 4;
-char writing[max_writing][2][PATH_MAX];
+char writing[max_writing][PATH_MAX];
 
 pid_t thread_id() { return static_cast<pid_t>(syscall(SYS_gettid)); }
 
@@ -217,8 +215,8 @@ void on_exit_call() {
 // A termination signal (the supervisor went, Ctrl-C) ends the process as
 // it would have, without leaving a half-written file behind.
 void on_termination(int sig) {
-  for (auto& pair : writing)
-    if (pair[0][0]) unlink(pair[0]), unlink(pair[1]);
+  for (auto& temporary : writing)
+    if (temporary[0]) unlink(temporary);
   signal(sig, SIG_DFL);
   raise(sig);
 }
@@ -337,14 +335,12 @@ bool report_activity_stack(double max_seconds) {
 }
 
 void note_writing(const std::string& temporary, const std::string& target) {
-  std::string inner = vv::io::temporary_beside(temporary);
-  for (auto& pair : writing)
-    if (!pair[0][0]) {
-      copy_text(pair[1], PATH_MAX, inner.c_str());
+  for (auto& slot : writing)
+    if (!slot[0]) {
       // The first byte last: a signal handler sees the whole path or none.
       if (!temporary.empty() && temporary.size() < PATH_MAX) {
-        copy_text(pair[0] + 1, PATH_MAX - 1, temporary.c_str() + 1);
-        pair[0][0] = temporary[0];
+        copy_text(slot + 1, PATH_MAX - 1, temporary.c_str() + 1);
+        slot[0] = temporary[0];
       }
       break;
     }
@@ -352,8 +348,8 @@ void note_writing(const std::string& temporary, const std::string& target) {
 }
 
 void note_written(const std::string& temporary) {
-  for (auto& pair : writing)
-    if (temporary == pair[0]) pair[0][0] = '\0';
+  for (auto& slot : writing)
+    if (temporary == slot) slot[0] = '\0';
   send("written " + temporary);
 }
 

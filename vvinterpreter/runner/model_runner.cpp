@@ -17,6 +17,7 @@ build_settings build_settings_for(const options& o, bool force) {
 
 session_settings session_settings_for(const options& o) {
   session_settings s;
+  s.model = o.model;
   // A plugin given on its own knows the folder it was translated from.
   if (!is_plugin_file(o.model)) s.model_dir = absolute_folder_of(o.model);
   s.seed = o.seed;

@@ -1,14 +1,14 @@
 #include "runner/plugin.hpp"
 
 #include <dlfcn.h>
-#include <signal.h>
 #include <unistd.h>
 
-#include <cerrno>
-
 #include <atomic>
-#include <cstdlib>
-#include <filesystem>
+#include <cerrno>
+#include <cstring>
+#include <optional>
+
+#include <vv/io/files.hpp>
 
 #include "runner/fault_guard.hpp"
 
@@ -16,39 +16,39 @@ namespace vvi {
 
 namespace {
 
-std::string temporary_dir() {
-  const char* tmp = std::getenv("TMPDIR");
-  return tmp && *tmp ? tmp : "/tmp";
-}
-
-// Copies left by processes that were killed ("vv-model-PID-N.so").
-void remove_stale_copies(const std::string& dir) {
-  std::error_code ec;
-  for (auto it = std::filesystem::directory_iterator(dir, ec); !ec && it != std::filesystem::directory_iterator();
-       it.increment(ec)) {
-    std::string name = it->path().filename().string();
-    if (name.rfind("vv-model-", 0) != 0) continue;
-    long pid = std::strtol(name.c_str() + 9, nullptr, 10);
-    std::error_code rm;
-    if (pid > 0 && kill(static_cast<pid_t>(pid), 0) != 0 && errno == ESRCH) std::filesystem::remove(it->path(), rm);
-  }
-}
-
 // Every load gets its own copy of the plugin under a name never used
 // before: the dynamic loader hands back an already loaded object when the
 // name (or the file) is the same, and then the model's globals would not
 // be initialised again (a reload of an unchanged build, a rewind while the
-// old instance is still loaded). The copy stays while the model is loaded,
-// so a debugger and the crash report can read its line tables.
+// old instance is still loaded). The name is a temporary's of vvlib
+// (vv/io/output_file.hpp): it holds this process's PID, its PID namespace,
+// the load's number and random letters, made with O_EXCL, so runs in other
+// containers sharing $TMPDIR, or other threads, never write over it. The
+// copy is removed once loaded (the mapping keeps it); copies of processes
+// killed before that are removed by the next load.
 std::string private_copy(const std::string& path, std::string& error) {
   static std::atomic<unsigned> loads{0};
-  std::string dir = temporary_dir();
-  if (loads == 0) remove_stale_copies(dir);
-  std::string copy = dir + "/vv-model-" + std::to_string(getpid()) + "-" + std::to_string(++loads) + ".so";
-  std::error_code ec;
-  std::filesystem::copy_file(path, copy, std::filesystem::copy_options::overwrite_existing, ec);
-  if (ec) error = path + ": error: cannot load the model: cannot copy it to " + dir + ": " + ec.message();
-  return ec ? std::string() : copy;
+  std::string dir = vv::io::temporary_folder();
+  auto fail = [&](const std::string& why) {
+    error = path + ": error: cannot load the model: cannot copy it to " + dir + ": " + why;
+    return std::string();
+  };
+  std::string why;
+  std::optional<std::string> bytes = vv::io::read_file(path, &why);
+  if (!bytes) {
+    error = path + ": error: cannot load the model: " + why;
+    return "";
+  }
+  vv::io::remove_dead_temporaries(dir);
+  vv::io::unique_file copy = vv::io::create_temporary(dir, "vv-model-" + std::to_string(++loads), ".so");
+  if (copy.fd < 0) return fail(copy.error);
+  int e = vv::io::detail::write_all(copy.fd, bytes->data(), bytes->size());
+  if (::close(copy.fd) != 0 && e == 0) e = errno;
+  if (e != 0) {
+    ::unlink(copy.path.c_str());
+    return fail(std::strerror(e));
+  }
+  return copy.path;
 }
 
 std::string abi_mismatch(const std::string& path, int version) {
@@ -84,6 +84,10 @@ std::unique_ptr<plugin> plugin::open(const std::string& path, std::string& error
   fault_guard::begin("loading");
   p->handle_ = dlopen(copy.c_str(), RTLD_NOW | RTLD_LOCAL);
   fault_guard::finish();
+  // Loaded or not, the file is no longer needed: /proc/self/maps names it
+  // "(deleted)", and the crash report reads the line tables of the plugin
+  // it was copied from (note_module).
+  ::unlink(copy.c_str());
   p->copy_ = copy;
   if (!p->handle_) {
     std::string why = dlerror_text();
@@ -108,7 +112,6 @@ std::unique_ptr<plugin> plugin::open(const std::string& path, std::string& error
 
 plugin::~plugin() {
   if (handle_) dlclose(handle_);
-  if (!copy_.empty()) unlink(copy_.c_str());
 }
 
 }  // namespace vvi

@@ -25,7 +25,8 @@ class plugin {
   const vv_plugin& model() const { return *model_; }
 
   const std::string& path() const { return path_; }
-  //! The private copy that is loaded (what /proc/self/maps names).
+  //! The private copy that is loaded (what /proc/self/maps names, followed
+  //! by " (deleted)": it is removed once loaded).
   const std::string& loaded_copy() const { return copy_; }
 
  private:
@@ -33,7 +34,7 @@ class plugin {
   void* handle_ = nullptr;
   const vv_plugin* model_ = nullptr;
   std::string path_;
-  std::string copy_;  // the private copy that is loaded (removed on unload)
+  std::string copy_;  // the private copy that is loaded (already removed)
 };
 
 }  // namespace vvi

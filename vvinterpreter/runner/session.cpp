@@ -1,7 +1,12 @@
 #include "runner/session.hpp"
 
+#include <execinfo.h>
+#include <stdlib.h>
+#include <unistd.h>
+
 #include <chrono>
 #include <cstdint>
+#include <cstdio>
 #include <fstream>
 
 #include "runner/crash_report.hpp"
@@ -16,7 +21,7 @@ std::unique_ptr<session> session::load(const std::string& plugin_path, const ses
   if (!p) return nullptr;
   vv_plugin_settings settings{s.model_dir.c_str(), s.seed, s.strict ? 1 : 0, s.check ? 1 : 0};
   p->model().configure(&settings);
-  return std::unique_ptr<session>(new session(std::move(p), s.check));
+  return std::unique_ptr<session>(new session(std::move(p), s.model, s.check));
 }
 
 namespace {
@@ -27,6 +32,14 @@ std::vector<std::string> own_maps() {
   for (std::string l; std::getline(in, l);) lines.push_back(l);
   return lines;
 }
+
+// The block running with no supervisor to hear of an exit() inside it.
+struct unsupervised_block {
+  const session* running = nullptr;
+  const char* block = nullptr;
+  unsigned step = 0;
+};
+unsupervised_block unsupervised;
 
 }  // namespace
 
@@ -45,13 +58,43 @@ std::string session::locate(const std::string& message) const {
   return found.front().file + ":" + std::to_string(found.front().line) + ": " + message;
 }
 
+// Said as batch's supervisor says it (runner/crash_report.hpp:
+// describe_exit), from the stack of the exit() call, which is still there;
+// the status is batch's too: the run is not done.
+void session::say_exit_in_block(int status, void*) {
+  unsupervised_block b = unsupervised;
+  if (!b.running) return;
+  child_end end;
+  end.kind = child_end::exited;
+  end.exit_code = status;
+  end.activity = {b.block, b.step};
+  end.sample.why = "exit";
+  void* frames[128];
+  int n = backtrace(frames, 128);
+  for (int i = 0; i < n; ++i) end.sample.frames.push_back(reinterpret_cast<std::uintptr_t>(frames[i]));
+  end.sample.maps = own_maps();
+  end.modules[b.running->plugin_->loaded_copy()] = b.running->plugin_->path();
+  crash_text t = describe_exit(end, b.running->model_);
+  std::fflush(nullptr);  // what the model printed comes first
+  std::fprintf(stderr, "vvinterpreter: %s\n%s", t.line.c_str(), t.stack.c_str());
+  std::fflush(stderr);
+  _exit(1);
+}
+
 bool session::run(const char* block, plugin::block_fn fn, unsigned step, bool announce) {
   // A block the program lacks: nothing to draw, but start, step, end and
   // close are still announced (a step without a step block still counts).
   if (!fn && !announce) return true;
   fault_guard::begin(block, step, announce);
+  // Supervised, the child's exit is reported by the supervisor.
+  const bool unsupervised_run = fault_guard::report_fd() < 0 && fn;
+  if (unsupervised_run) {
+    static const bool registered = on_exit(say_exit_in_block, nullptr) == 0;
+    if (registered) unsupervised = {this, block, step};
+  }
   throw_points::keep(true);
   const char* e = fn ? fn() : nullptr;
+  if (unsupervised_run) unsupervised = {};
   throw_points::keep(false);
   fault_guard::finish(announce);
   if (e) {

@@ -13,6 +13,7 @@
 namespace vvi {
 
 struct session_settings {
+  std::string model;      // the .vvp (or plugin) the user named, for messages
   std::string model_dir;  // relative paths in the program resolve against it
   std::uint64_t seed = 0;
   bool strict = false;    // reading a never-synchronised old state is an error
@@ -56,7 +57,8 @@ class session {
   bool has_block(plugin::block_fn vv_plugin::*block) const { return plugin_->model().*block != nullptr; }
 
  private:
-  session(std::unique_ptr<plugin> p, bool check) : plugin_(std::move(p)), check_(check) {}
+  session(std::unique_ptr<plugin> p, std::string model, bool check)
+      : plugin_(std::move(p)), model_(std::move(model)), check_(check) {}
   //! Runs a block as the named activity (runner/fault_guard.hpp).
   bool run(const char* block, plugin::block_fn fn, unsigned step = 0, bool announce = true);
   //! --check: false with the error set when a neighbourhood is broken.
@@ -64,7 +66,11 @@ class session {
   //! The message with the .vvp line of an error that came without one.
   std::string locate(const std::string& message) const;
 
+  //! With no supervisor (--in-process, --debug), exit() inside a block is
+  //! said here as the supervisor says it (an on_exit handler).
+  static void say_exit_in_block(int status, void*);
   std::unique_ptr<plugin> plugin_;
+  std::string model_;
   unsigned steps_ = 0;
   double last_step_ms_ = 0;
   std::string error_;

@@ -19,8 +19,6 @@
 #include <optional>
 #include <string>
 
-#include <vv/io/files.hpp>
-
 #include "runner/fault_guard.hpp"
 #include "runner/oom_kills.hpp"
 #include "runner/report_reader.hpp"
@@ -350,10 +348,7 @@ class watch {
 // The temporaries of files the child did not finish: they are its own
 // (runner/output_file.hpp), named so no other run uses them.
 void remove_unfinished_files(const child_end& end) {
-  for (const auto& [target, temporary] : end.writing) {
-    unlink(temporary.c_str());
-    unlink(vv::io::temporary_beside(temporary).c_str());
-  }
+  for (const auto& [target, temporary] : end.writing) unlink(temporary.c_str());
 }
 
 }  // namespace

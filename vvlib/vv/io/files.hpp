@@ -1,6 +1,6 @@
-// Whole-file reading, atomic writing and path resolution: the one copy
-// that vvlib's readers and writers, the translator (vvc) and the host
-// (vvinterpreter) share. Needs nothing but the standard library.
+// Whole-file reading, safe writing (output_file.hpp) and path resolution:
+// the one copy that vvlib's readers and writers, the translator (vvc) and
+// the host (vvinterpreter) share. Needs nothing but the standard library.
 #pragma once
 
 #include <fcntl.h>
@@ -23,6 +23,7 @@
 #include <vector>
 
 #include "../error.hpp"
+#include "output_file.hpp"
 
 namespace vv::io {
 
@@ -248,56 +249,6 @@ inline std::string extension_of(const std::string& path) {
                  [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
   return ext;
 }
-
-//! Where writing path really goes: for a symbolic link, the file it names
-//! (the link stays a link); otherwise path itself.
-inline std::string write_target(const std::string& path) {
-  std::error_code ec;
-  if (!std::filesystem::is_symlink(path, ec)) return path;
-  std::filesystem::path target = std::filesystem::weakly_canonical(path, ec);
-  return ec ? path : target.string();
-}
-
-//! A temporary name beside path, with the same extension (writers that
-//! choose the format by extension still work on it).
-inline std::string temporary_beside(const std::string& path) {
-  return path + ".vvtmp" + extension_of(path);
-}
-
-//! The temporary that writing path uses (beside a link's target).
-inline std::string temporary_for(const std::string& path) { return temporary_beside(write_target(path)); }
-
-//! Writes bytes to path atomically: into a temporary beside the file,
-//! checking every write and the close (a full disk shows there), then a
-//! rename over it. On failure the previous file is untouched, no temporary
-//! is left, and the error says why ("No space left on device").
-inline void write_file_atomically(const std::string& path, const std::string& bytes) {
-  const std::string target = write_target(path);
-  const std::string tmp = temporary_beside(target);
-  auto fail = [&](int e, bool remove) {
-    if (remove) std::remove(tmp.c_str());
-    throw error(path, 0, std::string("cannot write file: ") + std::strerror(e));
-  };
-  int fd = ::open(tmp.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0666);
-  if (fd < 0) fail(errno, false);
-  const char* p = bytes.data();
-  std::size_t left = bytes.size();
-  while (left > 0) {
-    ssize_t n = ::write(fd, p, left);
-    if (n < 0 && errno == EINTR) continue;
-    if (n <= 0) {
-      int e = n < 0 ? errno : ENOSPC;
-      ::close(fd);
-      fail(e, true);
-    }
-    p += n, left -= static_cast<std::size_t>(n);
-  }
-  if (::close(fd) != 0) fail(errno, true);
-  if (std::rename(tmp.c_str(), target.c_str()) != 0) fail(errno, true);
-}
-
-//! Writes text to path atomically (see write_file_atomically).
-inline void write_text_file(const std::string& path, const std::string& text) { write_file_atomically(path, text); }
 
 //! A program's relative path, resolved against its model folder.
 inline std::string resolve(const std::string& base_dir, const std::string& path) {
