@@ -178,8 +178,8 @@ TEST(Sweep, RunningTheSameCommandAgainSkipsFinishedRunsAndRunsTheFailedOnesAgain
 
 TEST(Sweep, AfterKillNineNoHalfWrittenRunCountsAndTheRerunGivesTheSameTable) {
   fs::path dir = fresh("kill");
-  // Each run naps 150 ms a step: the sweep is killed while its second run runs.
-  strings args = {"--sweep", "rate=0.5,2", "--seeds", "2", "--jobs", "1", "--set", "nap=150",
+  // Each run naps 100 ms a step: the sweep is killed while its second run runs.
+  strings args = {"--sweep", "rate=0.5,2", "--seeds", "2", "--jobs", "1", "--set", "nap=100",
                   "--steps", "3", "--out"};
   strings whole = args, killed = args;
   whole.insert(whole.end(), {(dir / "whole").string(), model});
