@@ -95,7 +95,7 @@ TEST(SweepPlan, AParameterSweptTwiceIsRefused) {
   }
 }
 
-TEST(Csv, QuotedCellsReadBackAsWritten) {
+TEST(SweepCsv, QuotedCellsReadBackAsWritten) {
   std::string text = vvi::csv::row({"step", "growth, %", "say \"hi\""}) + "1,2,\n";
   EXPECT_EQ(text, "step,\"growth, %\",\"say \"\"hi\"\"\"\n1,2,\n");
   auto rows = vvi::csv::read(text);
@@ -106,7 +106,7 @@ TEST(Csv, QuotedCellsReadBackAsWritten) {
   EXPECT_FALSE(vvi::csv::read("a,\"open\n"));
 }
 
-TEST(FailedRun, ReasonAndLineComeFromTheLastMessageOfTheRun) {
+TEST(SweepFailedRun, ReasonAndLineComeFromTheLastMessageOfTheRun) {
   std::string err = "vvinterpreter: /abs/m.vvp:9: step 1 has been running for 10 s\n"
                     "vvinterpreter: /abs/m.vvp:12: crashed with SIGABRT in step 2\n  /abs/m.vvp:12 in the step block\n";
   vvi::run_failure f = vvi::failure_from_output(err, "exited with status 1", "/abs/m.vvp", "m.vvp");
@@ -119,7 +119,7 @@ TEST(FailedRun, ReasonAndLineComeFromTheLastMessageOfTheRun) {
   EXPECT_EQ(f.reason, "killed by SIGKILL");
 }
 
-TEST(Progress, TimeLeftIsSaidInUnitsPeopleRead) {
+TEST(SweepProgress, TimeLeftIsSaidInUnitsPeopleRead) {
   EXPECT_EQ(vvi::time_left_text(0.2), "about 1 s");
   EXPECT_EQ(vvi::time_left_text(42), "about 42 s");
   EXPECT_EQ(vvi::time_left_text(185), "about 3 min");
@@ -139,7 +139,7 @@ std::string written(const std::function<void(vvi::sweep_progress&)>& use, bool r
   return text;
 }
 
-TEST(Progress, OnATerminalOneLineIsRewrittenInPlace) {
+TEST(SweepProgress, OnATerminalOneLineIsRewrittenInPlace) {
   std::string text = written(
       [](vvi::sweep_progress& p) {
         p.ended(false, "run 1");
@@ -154,7 +154,7 @@ TEST(Progress, OnATerminalOneLineIsRewrittenInPlace) {
   EXPECT_NE(text.find("\rruns: 2 done, 1 failed, 0 remaining\033[K\n"), std::string::npos) << text;
 }
 
-TEST(Progress, ElsewhereEachRunThatEndsIsALine) {
+TEST(SweepProgress, ElsewhereEachRunThatEndsIsALine) {
   std::string text = written(
       [](vvi::sweep_progress& p) {
         p.ended(false, "run 1 (a=1 seed=1)");
@@ -167,7 +167,7 @@ TEST(Progress, ElsewhereEachRunThatEndsIsALine) {
   EXPECT_NE(text.find("\nrun 2 (a=2 seed=1) failed: 1 done, 1 failed, 1 remaining, about "), std::string::npos) << text;
 }
 
-TEST(Identity, ItsTextReadsBackToTheSamePlan) {
+TEST(SweepIdentity, ItsTextReadsBackToTheSamePlan) {
   vvi::sweep_identity id{"abc", "plots.csv", {parse_sweep("rate=0:1:3"), parse_sweep("n=1,2")}, 2, 0, {"--steps", "3"}};
   EXPECT_EQ(id.text(),
             "vv sweep 1\nprogram abc\nplots plots.csv\nparameter rate 0,0.5,1\nparameter n 1,2\nseeds 2\noption --steps\n"
@@ -180,7 +180,7 @@ TEST(Identity, ItsTextReadsBackToTheSamePlan) {
   EXPECT_EQ(vvi::first_difference("a\nb 1\n", "a\nb 2\n"), "\"b 1\" there, \"b 2\" here");
 }
 
-TEST(Slurm, ShellWordsStayOneWordAsTheyAre) {
+TEST(SweepSlurm, ShellWordsStayOneWordAsTheyAre) {
   EXPECT_EQ(vvi::shell_word("rate=0.5"), "rate=0.5");
   EXPECT_EQ(vvi::shell_word("a b"), "'a b'");
   EXPECT_EQ(vvi::shell_word("it's $HOME"), "'it'\\''s $HOME'");

@@ -93,6 +93,21 @@ TEST(Sweep, RunsTableHasARowPerRunAndStepWithItsParametersSeedAndPlots) {
   EXPECT_NE(r.out.find("wrote " + out.string() + "/runs.csv\n"), std::string::npos) << r.out;
 }
 
+TEST(Sweep, OnATerminalProgressIsOneLineRewrittenInPlace) {
+  fs::path out = fresh("terminal") / "sweep";
+  if (!fs::exists("/usr/bin/script")) GTEST_SKIP() << "no script(1) to give the sweep a terminal";
+  // script(1) runs the sweep on a pseudo-terminal and copies what it shows.
+  std::string command;
+  for (const std::string& a : test_run::interpreter({"--sweep", "rate=0.5,2", "--steps", "3", "--jobs", "1", "--out",
+                                                     out.string(), model}))
+    command += "'" + a + "' ";
+  test_run::result r = test_run::run({"/usr/bin/script", "-qec", command, "/dev/null"});
+  ASSERT_EQ(r.status, 0) << r.out << r.err;
+  EXPECT_NE(r.out.find("\rruns: 1 done, 0 failed, 1 remaining, about "), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("\rruns: 2 done, 0 failed, 0 remaining\033[K\r\n"), std::string::npos) << r.out;
+  EXPECT_EQ(r.out.find(" finished: "), std::string::npos) << r.out;  // no line per run
+}
+
 TEST(Sweep, TheModelIsCompiledOnceAndEveryRunFindsItInTheCache) {
   fs::path out = fresh("compile_once") / "sweep";
   test_run::result r = sweep(out, {"--sweep", "rate=1,2,4", "--rebuild"});
@@ -208,7 +223,7 @@ TEST(Sweep, AfterKillNineNoHalfWrittenRunCountsAndTheRerunGivesTheSameTable) {
             header + rows(1, 1, "0.5", half) + rows(2, 2, "0.5", half) + rows(3, 1, "2", two) + rows(4, 2, "2", two));
 }
 
-TEST(Shards, TwoShardsMergedEqualTheWholeSweepByteForByte) {
+TEST(SweepShards, TwoShardsMergedEqualTheWholeSweepByteForByte) {
   fs::path dir = fresh("shards");
   strings args = {"--sweep", "rate=0.5,3,2", "--seeds", "2"};
   strings s1 = args, s2 = args;
@@ -230,7 +245,7 @@ TEST(Shards, TwoShardsMergedEqualTheWholeSweepByteForByte) {
   EXPECT_TRUE(fs::exists(dir / "merged" / "run-0004" / "failed"));
 }
 
-TEST(Shards, MergeRefusesFoldersOfDifferentSweeps) {
+TEST(SweepShards, MergeRefusesFoldersOfDifferentSweeps) {
   fs::path dir = fresh("merge_different");
   sweep(dir / "a", {"--sweep", "rate=1,2", "--shard", "1/2"});
   sweep(dir / "b", {"--sweep", "rate=1,2,4", "--shard", "2/2"});
@@ -243,7 +258,7 @@ TEST(Shards, MergeRefusesFoldersOfDifferentSweeps) {
   EXPECT_FALSE(fs::exists(dir / "m"));
 }
 
-TEST(Shards, MergeRefusesMissingAndDuplicateRuns) {
+TEST(SweepShards, MergeRefusesMissingAndDuplicateRuns) {
   fs::path dir = fresh("merge_runs");
   strings args = {"--sweep", "rate=1,2"};
   strings s1 = args;
@@ -278,7 +293,7 @@ std::string path_without_sbatch(const fs::path& first) {
   return path;
 }
 
-TEST(Slurm, TheWrittenScriptsRunTheShardsAndMergeToTheLocalSweepsTable) {
+TEST(SweepSlurm, TheWrittenScriptsRunTheShardsAndMergeToTheLocalSweepsTable) {
   fs::path dir = fresh("slurm_scripts");
   fs::create_directories(dir / "bin");
   strings args = {"--sweep", "rate=0.5,3,2", "--seeds", "2"};
@@ -323,7 +338,7 @@ TEST(Slurm, TheWrittenScriptsRunTheShardsAndMergeToTheLocalSweepsTable) {
   EXPECT_EQ(read(dir / "cluster" / "failed.csv"), read(dir / "local" / "failed.csv"));
 }
 
-TEST(Slurm, WithSbatchTheArrayIsSubmittedAndTheMergeWaitsForIt) {
+TEST(SweepSlurm, WithSbatchTheArrayIsSubmittedAndTheMergeWaitsForIt) {
   fs::path dir = fresh("slurm_submit");
   fs::create_directories(dir / "bin");
   // A stand-in for sbatch: logs its arguments, answers job ids 4242, 4243
@@ -351,7 +366,7 @@ TEST(Slurm, WithSbatchTheArrayIsSubmittedAndTheMergeWaitsForIt) {
 // The first line of standard error.
 std::string first_error(const test_run::result& r) { return r.err.substr(0, r.err.find('\n')); }
 
-TEST(BadInput, AnUnknownParameterIsNamedWithTheModelsParameters) {
+TEST(SweepBadInput, AnUnknownParameterIsNamedWithTheModelsParameters) {
   fs::path out = fresh("bad_name") / "sweep";
   test_run::result r = sweep(out, {"--sweep", "speed=1,2"});
   EXPECT_EQ(r.status, 1);
@@ -360,7 +375,7 @@ TEST(BadInput, AnUnknownParameterIsNamedWithTheModelsParameters) {
   EXPECT_FALSE(fs::exists(out));
 }
 
-TEST(BadInput, AValueOutsideTheParametersRangeIsNamedWithTheOption) {
+TEST(SweepBadInput, AValueOutsideTheParametersRangeIsNamedWithTheOption) {
   fs::path out = fresh("bad_value") / "sweep";
   test_run::result r = sweep(out, {"--sweep", "rate=0:20:3"});
   EXPECT_EQ(r.status, 1);
@@ -369,7 +384,7 @@ TEST(BadInput, AValueOutsideTheParametersRangeIsNamedWithTheOption) {
   EXPECT_FALSE(fs::exists(out));
 }
 
-TEST(BadInput, EmptyRangesAndCountZeroAreRefused) {
+TEST(SweepBadInput, EmptyRangesAndCountZeroAreRefused) {
   fs::path out = fresh("bad_range") / "sweep";
   test_run::result empty = sweep(out, {"--sweep", "rate=2:1:3"});
   EXPECT_EQ(empty.status, 2);
@@ -382,7 +397,7 @@ TEST(BadInput, EmptyRangesAndCountZeroAreRefused) {
   EXPECT_FALSE(fs::exists(out));
 }
 
-TEST(BadInput, AShardOutOfRangeIsRefused) {
+TEST(SweepBadInput, AShardOutOfRangeIsRefused) {
   fs::path out = fresh("bad_shard") / "sweep";
   test_run::result r = sweep(out, {"--sweep", "rate=1,2", "--shard", "3/2"});
   EXPECT_EQ(r.status, 2);
@@ -394,13 +409,13 @@ TEST(BadInput, AShardOutOfRangeIsRefused) {
   EXPECT_FALSE(fs::exists(out));
 }
 
-TEST(BadInput, ASweepWithoutOutIsRefused) {
+TEST(SweepBadInput, ASweepWithoutOutIsRefused) {
   test_run::result r = vv({"--sweep", "rate=1,2", "--steps", "3", model});
   EXPECT_EQ(r.status, 2);
   EXPECT_EQ(first_error(r), "vvinterpreter: a sweep needs --out DIR, the folder for its runs and tables");
 }
 
-TEST(BadInput, AFolderOfAnotherSweepOrOtherFilesIsLeftAsItWas) {
+TEST(SweepBadInput, AFolderOfAnotherSweepOrOtherFilesIsLeftAsItWas) {
   fs::path dir = fresh("bad_out");
   ASSERT_EQ(sweep(dir / "sweep", {"--sweep", "rate=1,2"}).status, 0);
   std::string table = read(dir / "sweep" / "runs.csv");
@@ -422,7 +437,7 @@ TEST(BadInput, AFolderOfAnotherSweepOrOtherFilesIsLeftAsItWas) {
   EXPECT_EQ(read(dir / "papers" / "draft.txt"), "mine");
 }
 
-TEST(BadInput, AnAbsoluteOutputNameIsRefusedBecauseEveryRunWouldWriteIt) {
+TEST(SweepBadInput, AnAbsoluteOutputNameIsRefusedBecauseEveryRunWouldWriteIt) {
   fs::path out = fresh("bad_export") / "sweep";
   test_run::result r = sweep(out, {"--sweep", "rate=1,2", "--export", "/tmp/final.obj"});
   EXPECT_EQ(r.status, 2);
