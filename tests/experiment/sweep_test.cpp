@@ -223,6 +223,23 @@ TEST(Sweep, AfterKillNineNoHalfWrittenRunCountsAndTheRerunGivesTheSameTable) {
             header + rows(1, 1, "0.5", half) + rows(2, 2, "0.5", half) + rows(3, 1, "2", two) + rows(4, 2, "2", two));
 }
 
+TEST(Sweep, ASecondSweepInTheSameFolderIsRefusedWhileTheFirstRuns) {
+  fs::path out = fresh("busy") / "sweep";
+  strings args = {"--sweep", "rate=0.5,2", "--jobs", "1", "--set", "nap=100", "--steps", "3", "--out", out.string(),
+                  model};
+  test_run::spawned first(test_run::interpreter(args));
+  auto until = std::chrono::steady_clock::now() + std::chrono::seconds(60);
+  while (!fs::exists(out / "run-0001") && std::chrono::steady_clock::now() < until)
+    std::this_thread::sleep_for(std::chrono::milliseconds(10));
+  test_run::result second = vv(args);
+  EXPECT_EQ(second.status, 1);
+  EXPECT_EQ(second.err, "vvinterpreter: " + out.string() +
+                            ": another sweep or merge is working in this folder; wait for it to end\n");
+  test_run::result done = first.finish();
+  EXPECT_EQ(done.status, 0) << done.err;
+  EXPECT_EQ(read(out / "runs.csv"), header + rows(1, 0, "0.5", half) + rows(2, 0, "2", two));
+}
+
 TEST(SweepShards, TwoShardsMergedEqualTheWholeSweepByteForByte) {
   fs::path dir = fresh("shards");
   strings args = {"--sweep", "rate=0.5,3,2", "--seeds", "2"};

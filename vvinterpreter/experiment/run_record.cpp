@@ -5,25 +5,20 @@
 
 #include <vv/io/files.hpp>
 
+#include "experiment/sweep_folder.hpp"
+
 namespace vvi {
 
 namespace {
 
 const char* const finished_marker = "/finished";
 const char* const failed_marker = "/failed";
+const char* const finished_name = "finished";
+const char* const failed_name = "failed";
 
 bool exists(const std::string& path) {
   struct stat st {};
   return ::stat(path.c_str(), &st) == 0 && S_ISREG(st.st_mode);
-}
-
-std::string write(const std::string& path, const std::string& text) {
-  try {
-    vv::io::write_file_atomically(path, text);
-    return "";
-  } catch (const std::exception& e) {
-    return e.what();
-  }
 }
 
 // A one-line field: line breaks would split it.
@@ -52,10 +47,10 @@ run_state state_of_run(const std::string& folder) {
   return run_state::unfinished;
 }
 
-std::string mark_finished(const std::string& folder) { return write(folder + finished_marker, "finished\n"); }
+std::string mark_finished(const std::string& folder) { return write_in_folder(folder, finished_name, "finished\n"); }
 
 std::string mark_failed(const std::string& folder, const run_failure& f) {
-  return write(folder + failed_marker, "line: " + one_line(f.line) + "\nreason: " + one_line(f.reason) + "\n");
+  return write_in_folder(folder, failed_name, "line: " + one_line(f.line) + "\nreason: " + one_line(f.reason) + "\n");
 }
 
 run_failure read_failure(const std::string& folder) {

@@ -25,7 +25,8 @@ class sweep_folder {
   int lock_ = -1;
 };
 
-//! Writes DIR/NAME atomically: "" or why not.
+//! Writes DIR/NAME atomically (every file of a sweep's folder is written
+//! so: a temporary, then a rename): "" or why not.
 std::string write_in_folder(const std::string& dir, const std::string& name, const std::string& text);
 
 }  // namespace vvi
