@@ -39,7 +39,8 @@ fail() {
   exit 1
 }
 
-# munge, private: its own key, socket, pid and log.
+# munge, private: its own key, socket, pid and log (a munged the system
+# runs is left alone).
 mkdir -p "$work/munge" "$work/spool/ctld" "$work/spool/d"
 chmod 700 "$work/munge"
 dd if=/dev/urandom of="$work/munge/munge.key" bs=1024 count=1 2> /dev/null
@@ -51,13 +52,20 @@ pids="$pids $(cat "$work/munge/munged.pid")"
 
 host=$(hostname -s)
 cpus=$(nproc)
+# Ports of its own: other checkouts may run this test at the same time.
+free_port() {
+  /usr/bin/python3 -c 'import socket; s = socket.socket(); s.bind(("", 0)); print(s.getsockname()[1])' 2> /dev/null ||
+    echo $((20000 + $$ % 20000 + $1))
+}
+ctld_port=$(free_port 0)
+d_port=$(free_port 1)
 cat > "$work/slurm.conf" << CONF
 ClusterName=vvtest
 SlurmctldHost=$host
 SlurmUser=root
 SlurmdUser=root
-SlurmctldPort=16917
-SlurmdPort=16918
+SlurmctldPort=$ctld_port
+SlurmdPort=$d_port
 AuthType=auth/munge
 AuthInfo=socket=$work/munge/socket
 CredType=cred/munge
