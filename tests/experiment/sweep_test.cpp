@@ -293,6 +293,10 @@ TEST(SweepShards, MergeRefusesMissingAndDuplicateRuns) {
                        "  run 1 (rate=1 seed=0) is in " + (dir / "s1").string() + " and in " +
                        (dir / "whole").string() + "\n");
   EXPECT_FALSE(fs::exists(dir / "m"));
+  test_run::result no_dirs = vv({"--merge", "--out", (dir / "m").string()});
+  EXPECT_EQ(no_dirs.status, 2);
+  EXPECT_EQ(no_dirs.err.substr(0, no_dirs.err.find('\n')),
+            "vvinterpreter: --merge needs the folders of the shards to merge, e.g. --merge a b --out all");
   test_run::result no_out = vv({"--merge", (dir / "s1").string()});
   EXPECT_EQ(no_out.status, 2);
   EXPECT_EQ(no_out.err.substr(0, no_out.err.find('\n')),

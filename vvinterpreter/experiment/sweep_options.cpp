@@ -66,8 +66,9 @@ void add_sweep_options(CLI::App& app, sweep_options& s) {
     s.out = v;
   });
   app.add_option_function<std::vector<std::string>>("--merge", [&s](const std::vector<std::string>& dirs) {
+       if (dirs.empty()) refuse("--merge needs the folders of the shards to merge, e.g. --merge a b --out all");
        for (const std::string& d : dirs) {
-         if (d.empty()) refuse("--merge needs the folders of the shards to merge");
+         if (d.empty()) refuse("--merge needs the folders of the shards to merge, e.g. --merge a b --out all");
          s.merge.push_back(d);
        }
      })->expected(0, -1)->trigger_on_parse();
