@@ -4,6 +4,7 @@
 
 #include "batch/batch.hpp"
 #include "app/options.hpp"
+#include "experiment/sweep.hpp"
 #include "viewer/viewer.hpp"
 
 int main(int argc, char** argv) {
@@ -16,6 +17,8 @@ int main(int argc, char** argv) {
     std::printf("%s", p.message.c_str());
     return 0;
   }
+  if (p.opts.sweep.merging()) return vvi::run_merge(p.opts);
+  if (p.opts.sweep.sweeping()) return vvi::run_sweep(p.opts, argc, argv);
   if (p.opts.compile_only) return vvi::run_compile_only(p.opts);
   if (p.opts.batch) return vvi::run_batch(p.opts);
   return vvi::run_viewer(p.opts);

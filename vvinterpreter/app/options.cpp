@@ -7,6 +7,7 @@
 #include <string>
 
 #include "compile/build_config.hpp"
+#include "experiment/sweep_options.hpp"
 #include "viewer/script.hpp"
 
 namespace vvi {
@@ -19,6 +20,9 @@ const char* usage_text =
     "                     [--pick LABEL ...] [--color-by NAME] MODEL.vvp\n"
     "       vvinterpreter --list-params [--set NAME=VALUE ...] MODEL.vvp\n"
     "       vvinterpreter --compile-only MODEL.vvp\n"
+    "       vvinterpreter --sweep NAME=V1,V2,... [--sweep NAME=LO:HI:COUNT ...] [--seeds K]\n"
+    "                     [--jobs J] [--shard I/N | --slurm N] --out DIR [batch options] MODEL.vvp\n"
+    "       vvinterpreter --merge DIR [DIR ...] --out DIR\n"
     "\n"
     "Translates, compiles and runs a vv model: in a window (the default), or\n"
     "headless with --batch: start, N steps, (end), export, screenshot, close.\n"
@@ -60,6 +64,18 @@ const char* usage_text =
     "  --in-process       batch: run the model in this process, unsupervised (a crash\n"
     "                     then ends the interpreter; for profilers and debuggers)\n"
     "  --quiet            no progress or summary lines\n"
+    "\n"
+    "experiments (docs/experiments.md):\n"
+    "  --sweep NAME=V1,V2,...  run the model for each value of the parameter NAME;\n"
+    "  --sweep NAME=LO:HI:COUNT  or for COUNT values from LO to HI; repeatable (every\n"
+    "                     combination runs)\n"
+    "  --seeds K          run each combination with the seeds 1 to K\n"
+    "  --jobs J           runs at a time, each in its own process (default: the cores)\n"
+    "  --out DIR          the sweep's folder: run-NNNN/ per run, runs.csv, failed.csv\n"
+    "  --shard I/N        run only every N-th run from run I (a cluster's job array)\n"
+    "  --slurm N          write (and submit with sbatch) a Slurm job array of N shards\n"
+    "                     and a job that merges them into DIR\n"
+    "  --merge DIR...     join shard folders of one sweep into --out DIR\n"
     "  --help, --version\n";
 
 namespace {
@@ -202,9 +218,12 @@ void check_whole(const CLI::App& app, const std::vector<std::string>& models, op
   for (const std::string& a : app.remaining())
     if (!a.empty() && a[0] == '-') throw usage_error{"unknown option " + a};
   if (models.size() > 1) throw usage_error{"more than one model (" + models[0] + " and " + models[1] + ")"};
+  if (std::string why = check_sweep_options(o.sweep, !models.empty()); !why.empty()) throw usage_error{why};
+  if (o.sweep.merging()) return;  // the folders name their model
   if (models.empty() || models[0].empty()) throw usage_error{"no model given"};
   o.model = models[0];
   if (o.list_params) o.batch = true;  // headless, and supervised like a batch run
+  if (o.sweep.sweeping()) o.batch = true;  // each run is a batch run
   if (o.batch && !o.script.empty()) throw usage_error{"--script drives the viewer; it cannot be used with --batch"};
   if (o.rebuild && !o.batch && !o.compile_only)
     throw usage_error{"--rebuild is for --batch and --compile-only (the viewer rebuilds with its Recompile button)"};
@@ -221,6 +240,7 @@ parse_result parse_options(int argc, const char* const* argv) {
   numbers(app, r.opts);
   view_options(app, r.opts);
   model_inputs(app, r.opts);
+  add_sweep_options(app, r.opts.sweep);
   app.add_option("model", models);
   app.allow_extras();  // unknown options are named below, as before
   try {

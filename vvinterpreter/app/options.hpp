@@ -5,6 +5,8 @@
 #include <string>
 #include <vector>
 
+#include "experiment/sweep_options.hpp"
+
 namespace vvi {
 
 struct options {
@@ -37,6 +39,7 @@ struct options {
   int optimization = 1;       // --opt N
   bool rebuild = false;       // --rebuild: compile even when the cache holds the model (batch, --compile-only)
   bool quiet = false;         // --quiet: no progress, no summary
+  sweep_options sweep;        // --sweep, --seeds, --jobs, --shard, --out, --merge, --slurm
 };
 
 struct parse_result {

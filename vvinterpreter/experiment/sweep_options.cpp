@@ -1,0 +1,97 @@
+#include "experiment/sweep_options.hpp"
+
+#include <CLI/CLI.hpp>
+
+#include <cstdlib>
+#include <functional>
+
+namespace vvi {
+
+namespace {
+
+[[noreturn]] void refuse(const std::string& why) { throw CLI::ValidationError(why); }
+
+bool whole_number(const std::string& s, unsigned long& out) {
+  if (s.empty() || s.size() > 9 || s.find_first_not_of("0123456789") != std::string::npos) return false;
+  out = std::strtoul(s.c_str(), nullptr, 10);
+  return true;
+}
+
+unsigned count_of(const std::string& v, unsigned long lo, unsigned long hi, const std::string& need) {
+  unsigned long n = 0;
+  if (!whole_number(v, n) || n < lo || n > hi) refuse(need);
+  return static_cast<unsigned>(n);
+}
+
+// One value per occurrence, in command-line order; a missing value reaches
+// `take` as "" so that each option says what it needs.
+void with_value(CLI::App& app, const std::string& name, std::function<void(const std::string&)> take) {
+  app.add_option_function<std::string>(name, std::move(take))->expected(0, 1)->trigger_on_parse();
+}
+
+// I/N with 1 <= I <= N.
+void read_shard(const std::string& v, sweep_options& s) {
+  std::size_t slash = v.find('/');
+  unsigned long i = 0, n = 0;
+  if (slash == std::string::npos || !whole_number(v.substr(0, slash), i) || !whole_number(v.substr(slash + 1), n))
+    refuse("--shard needs I/N, e.g. --shard 2/8 (the second of 8 shards)" +
+           std::string(v.empty() ? "" : "; \"" + v + "\" is not"));
+  if (n == 0) refuse("--shard " + v + ": the number of shards must be 1 or more");
+  if (i < 1 || i > n)
+    refuse("--shard " + v + ": shard " + std::to_string(i) + " is out of range: shards are numbered 1 to " +
+           std::to_string(n));
+  s.shard = static_cast<unsigned>(i);
+  s.shards = static_cast<unsigned>(n);
+}
+
+}  // namespace
+
+void add_sweep_options(CLI::App& app, sweep_options& s) {
+  with_value(app, "--sweep", [&s](const std::string& v) {
+    if (v.empty()) refuse("--sweep needs NAME=V1,V2,... or NAME=LO:HI:COUNT, e.g. --sweep rate=0.1,0.2");
+    s.sweeps.push_back(v);  // read in full by the sweep's plan, which names what is wrong
+  });
+  with_value(app, "--seeds", [&s](const std::string& v) {
+    s.seeds = count_of(v, 1, 1000000, "--seeds needs a number of seeds from 1 to 1000000 (the runs use seeds 1 to K)");
+  });
+  with_value(app, "--jobs", [&s](const std::string& v) {
+    s.jobs = count_of(v, 1, 4096, "--jobs needs a number of runs at a time from 1 to 4096");
+  });
+  with_value(app, "--slurm", [&s](const std::string& v) {
+    s.slurm = count_of(v, 1, 100000, "--slurm needs the number of shards (array tasks) from 1 to 100000");
+  });
+  with_value(app, "--shard", [&s](const std::string& v) { read_shard(v, s); });
+  with_value(app, "--out", [&s](const std::string& v) {
+    if (v.empty()) refuse("--out needs a folder");
+    s.out = v;
+  });
+  app.add_option_function<std::vector<std::string>>("--merge", [&s](const std::vector<std::string>& dirs) {
+       if (dirs.empty()) refuse("--merge needs the folders of the shards to merge, e.g. --merge a b --out all");
+       for (const std::string& d : dirs) {
+         if (d.empty()) refuse("--merge needs the folders of the shards to merge, e.g. --merge a b --out all");
+         s.merge.push_back(d);
+       }
+     })->expected(0, -1)->trigger_on_parse();
+}
+
+std::string check_sweep_options(const sweep_options& s, bool model_given) {
+  if (s.merging()) {
+    if (s.sweeping() || s.jobs || s.shards || s.slurm)
+      return "--merge joins finished folders; it takes no --sweep, --seeds, --jobs, --shard or --slurm";
+    if (s.out.empty()) return "--merge needs --out DIR, the folder to merge into";
+    if (model_given) return "--merge takes no model: the folders' sweep names it";
+    return "";
+  }
+  if (!s.sweeping()) {
+    if (s.jobs) return "--jobs is for sweeps (--sweep or --seeds)";
+    if (s.shards) return "--shard is for sweeps (--sweep or --seeds)";
+    if (s.slurm) return "--slurm is for sweeps (--sweep or --seeds)";
+    if (!s.out.empty()) return "--out is for sweeps (--sweep or --seeds) and --merge";
+    return "";
+  }
+  if (s.out.empty()) return "a sweep needs --out DIR, the folder for its runs and tables";
+  if (s.slurm && s.shards) return "--slurm writes one job per shard itself; it takes no --shard";
+  return "";
+}
+
+}  // namespace vvi
