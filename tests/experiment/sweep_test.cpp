@@ -223,6 +223,32 @@ TEST(Sweep, AfterKillNineNoHalfWrittenRunCountsAndTheRerunGivesTheSameTable) {
             header + rows(1, 1, "0.5", half) + rows(2, 2, "0.5", half) + rows(3, 1, "2", two) + rows(4, 2, "2", two));
 }
 
+TEST(Sweep, CtrlCEndsTheRunningRunsWritesTheTablesOfTheFinishedOnesAndTheRerunCompletes) {
+  fs::path out = fresh("interrupt") / "sweep";
+  strings args = {"--sweep", "rate=0.5,2", "--seeds", "2", "--jobs", "1", "--set", "nap=100", "--steps", "3",
+                  "--out", out.string(), model};
+  test_run::spawned s(test_run::interpreter(args));
+  auto until = std::chrono::steady_clock::now() + std::chrono::seconds(60);
+  while (!fs::exists(out / "run-0001" / "finished") && std::chrono::steady_clock::now() < until)
+    std::this_thread::sleep_for(std::chrono::milliseconds(10));
+  kill(s.pid(), SIGINT);
+  test_run::result r = s.finish();
+  EXPECT_EQ(r.status, 128 + SIGINT);
+  EXPECT_NE(r.err.find("vvinterpreter: interrupted (SIGINT); the unfinished runs run when the same command is given "
+                       "again\n"),
+            std::string::npos)
+      << r.err;
+  // The tables hold what finished (run 1, perhaps run 2); the run it ended has no marker.
+  std::string table = read(out / "runs.csv");
+  EXPECT_EQ(table.rfind(header + rows(1, 1, "0.5", half), 0), 0u) << table;
+  EXPECT_FALSE(fs::exists(out / "run-0004" / "finished"));
+  EXPECT_EQ(read(out / "failed.csv"), "run,seed,rate,line,reason\n");  // an interrupted run is no failed run
+  test_run::result again = vv(args);
+  ASSERT_EQ(again.status, 0) << again.err;
+  EXPECT_EQ(read(out / "runs.csv"),
+            header + rows(1, 1, "0.5", half) + rows(2, 2, "0.5", half) + rows(3, 1, "2", two) + rows(4, 2, "2", two));
+}
+
 TEST(Sweep, ASecondSweepInTheSameFolderIsRefusedWhileTheFirstRuns) {
   fs::path out = fresh("busy") / "sweep";
   strings args = {"--sweep", "rate=0.5,2", "--jobs", "1", "--set", "nap=100", "--steps", "3", "--out", out.string(),
