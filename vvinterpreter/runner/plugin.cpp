@@ -5,7 +5,9 @@
 
 #include <atomic>
 #include <cerrno>
+#include <cstdlib>
 #include <cstring>
+#include <fstream>
 #include <optional>
 
 #include <vv/io/files.hpp>
@@ -51,6 +53,16 @@ std::string private_copy(const std::string& path, std::string& error) {
   return copy.path;
 }
 
+// Whether a debugger (or another tracer) is attached: gdb reads the
+// loaded file again after the load (to unwind through it, for sections it
+// reads lazily), so under one the copy stays until the model is unloaded.
+bool traced() {
+  std::ifstream status("/proc/self/status");
+  for (std::string line; std::getline(status, line);)
+    if (line.rfind("TracerPid:", 0) == 0) return std::strtol(line.c_str() + 10, nullptr, 10) != 0;
+  return false;
+}
+
 std::string abi_mismatch(const std::string& path, int version) {
   return path + ": error: the model was built for plugin ABI " + std::to_string(version) +
          ", this interpreter loads ABI " + std::to_string(VV_PLUGIN_ABI_VERSION) + "; rebuild it";
@@ -86,9 +98,9 @@ std::unique_ptr<plugin> plugin::open(const std::string& path, std::string& error
   fault_guard::finish();
   // Loaded or not, the file is no longer needed: /proc/self/maps names it
   // "(deleted)", and the crash report reads the line tables of the plugin
-  // it was copied from (note_module).
-  ::unlink(copy.c_str());
+  // it was copied from (note_module). Under a debugger it goes on unload.
   p->copy_ = copy;
+  p->copy_removed_ = !traced() && ::unlink(copy.c_str()) == 0;
   if (!p->handle_) {
     std::string why = dlerror_text();
     // The loader names the private copy; the user knows the plugin.
@@ -112,6 +124,7 @@ std::unique_ptr<plugin> plugin::open(const std::string& path, std::string& error
 
 plugin::~plugin() {
   if (handle_) dlclose(handle_);
+  if (!copy_removed_ && !copy_.empty()) ::unlink(copy_.c_str());
 }
 
 }  // namespace vvi

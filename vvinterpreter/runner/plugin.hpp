@@ -26,7 +26,8 @@ class plugin {
 
   const std::string& path() const { return path_; }
   //! The private copy that is loaded (what /proc/self/maps names, followed
-  //! by " (deleted)": it is removed once loaded).
+  //! by " (deleted)": it is removed once loaded, unless a debugger is
+  //! attached).
   const std::string& loaded_copy() const { return copy_; }
 
  private:
@@ -34,7 +35,8 @@ class plugin {
   void* handle_ = nullptr;
   const vv_plugin* model_ = nullptr;
   std::string path_;
-  std::string copy_;  // the private copy that is loaded (already removed)
+  std::string copy_;           // the private copy that is loaded
+  bool copy_removed_ = false;  // once loaded; under a debugger, on unload
 };
 
 }  // namespace vvi
