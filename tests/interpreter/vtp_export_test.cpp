@@ -2,12 +2,14 @@
 // (its properties are known only inside it), read back by VTK itself
 // (python3-vtk9, tests/unit/read_vtk.py): the icosahedron with properties
 // set from the positions; the union of two meshes with and without
-// --max-face; a path that cannot be written.
+// --max-face; a path that cannot be written; the viewer's `export` script
+// command.
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <fstream>
 #include <string>
 #include <vector>
 
@@ -123,6 +125,26 @@ TEST(VtpExport, IntoAMissingFolderFailsNamingItAndLeavesNothing) {
   EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
   EXPECT_NE(r.err.find(dir + "no_such_folder/ico.vtp"), std::string::npos) << r.err;
   EXPECT_TRUE(fs::is_empty(dir));
+}
+
+TEST(VtpExport, ViewerScriptExportCommandWritesVtp) {
+  const std::string dir = fresh_dir("vtp_viewer");
+  {
+    std::ofstream script(dir + "s.txt");
+    script << "export S " << dir << "ico.vtp\nquit\n";
+  }
+  test_run::result r = test_run::run(
+      test_run::in_virtual_display(test_run::interpreter({"--script", dir + "s.txt", test_model("vtp_properties.vvp")})),
+      280);
+  ASSERT_FALSE(r.timed_out);
+  ASSERT_EQ(r.status, 0) << "stderr: " << r.err << "\nstdout: " << r.out;
+  EXPECT_NE(r.out.find("wrote " + dir + "ico.vtp"), std::string::npos) << r.out;
+  read_back back = read_with_vtk(dir + "ico.vtp");
+  EXPECT_EQ(back.points.size(), 12u);
+  EXPECT_EQ(back.cells["polys"].size(), 20u);
+  std::vector<std::string> names;
+  for (const auto& a : back.arrays) names.push_back(a.name);
+  EXPECT_EQ(names, (std::vector<std::string>{"height", "sign", "upper", "normal"}));
 }
 
 }  // namespace

@@ -34,7 +34,7 @@ const char* usage_text =
     "  --batch            run without a window\n"
     "  --steps N          steps to run in batch mode (default 0)\n"
     "  --end              run the end block after the last step (batch)\n"
-    "  --export FILE      write a mesh after the steps: .vvm .obj .off .ply .stl\n"
+    "  --export FILE      write a mesh after the steps: .vvm .obj .off .ply .stl .vtp\n"
     "  --mesh NAME[,NAME] the global meshes to export or draw, as one (default: the first)\n"
     "  --step-timeout S   end a step that runs longer than S seconds, as an error (batch)\n"
     "  --max-face N       face orbits longer than N are holes, not faces\n"

@@ -14,7 +14,7 @@ struct options {
   bool batch = false;
   bool compile_only = false;
   unsigned steps = 0;
-  std::string export_path;    // --export FILE (.vvm .obj .off .ply .stl)
+  std::string export_path;    // --export FILE (.vvm .obj .off .ply .stl .vtp)
   std::vector<std::string> meshes;  // --mesh NAME[,NAME...] (default: the first global mesh)
   bool end_block = false;     // --end: run the end block after the last step (batch)
   double step_timeout = 0;    // --step-timeout SECONDS (batch; 0: no limit)

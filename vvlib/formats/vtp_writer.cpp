@@ -5,6 +5,7 @@
 #include <vv/io/vtk_files.hpp>
 
 #include <algorithm>
+#include <cstdint>
 #include <cstring>
 
 namespace vv {
@@ -73,19 +74,29 @@ class vtp_builder {
   }
 
   // A kind of cell (Verts, Lines, Polys) as connectivity and the end
-  // offset of each cell; nothing when there are none.
-  void cells(const char* element, const std::vector<std::vector<std::size_t>>& lists) {
+  // offset of each cell; nothing when there are none. Int32 while every
+  // number fits (half the bytes; VTK widens them as it reads), else Int64.
+  void cells(const char* element, const std::vector<std::vector<std::size_t>>& lists, std::size_t points) {
     if (lists.empty()) return;
-    std::vector<std::int64_t> connectivity, offsets;
-    for (const auto& list : lists) {
-      for (std::size_t i : list) connectivity.push_back(static_cast<std::int64_t>(i));
-      offsets.push_back(static_cast<std::int64_t>(connectivity.size()));
-    }
+    std::size_t total = 0;
+    for (const auto& list : lists) total += list.size();
     xml += std::string("      <") + element + ">\n";
-    array("        ", "connectivity", vtk_number::int64, 1, reinterpret_cast<const char*>(connectivity.data()),
-          connectivity.size());
-    array("        ", "offsets", vtk_number::int64, 1, reinterpret_cast<const char*>(offsets.data()), offsets.size());
+    if (std::max(points, total) <= std::size_t(INT32_MAX))
+      cell_arrays<std::int32_t>(lists, vtk_number::int32);
+    else
+      cell_arrays<std::int64_t>(lists, vtk_number::int64);
     xml += std::string("      </") + element + ">\n";
+  }
+
+  template <class Index>
+  void cell_arrays(const std::vector<std::vector<std::size_t>>& lists, vtk_number type) {
+    std::vector<Index> connectivity, offsets;
+    for (const auto& list : lists) {
+      for (std::size_t i : list) connectivity.push_back(static_cast<Index>(i));
+      offsets.push_back(static_cast<Index>(connectivity.size()));
+    }
+    array("        ", "connectivity", type, 1, reinterpret_cast<const char*>(connectivity.data()), connectivity.size());
+    array("        ", "offsets", type, 1, reinterpret_cast<const char*>(offsets.data()), offsets.size());
   }
 
   std::string xml, appended;
@@ -142,9 +153,9 @@ std::string vtp_bytes(const vtp_polydata& data, const std::string& path) {
   static_assert(sizeof(std::array<double, 3>) == 3 * sizeof(double), "points are packed");
   b.array("        ", "Points", vtk_number::float64, 3, reinterpret_cast<const char*>(data.points.data()), 3 * n);
   b.xml += "      </Points>\n";
-  b.cells("Verts", verts);
-  b.cells("Lines", data.lines);
-  b.cells("Polys", data.polys);
+  b.cells("Verts", verts, n);
+  b.cells("Lines", data.lines, n);
+  b.cells("Polys", data.polys, n);
   b.xml += "    </Piece>\n"
            "  </PolyData>\n"
            "  <AppendedData encoding=\"raw\">\n"
