@@ -225,7 +225,9 @@ build_result build_unguarded(const std::string& path, const build_settings& s) {
   // The polygon formats come compiled, from vv_formats (M.readFile("x.obj")).
   std::string lib = vvlib_library_dir();
   compile_job job;
-  job.libraries = {"-L", lib, "-Wl,-rpath," + lib, "-lvv_formats", "-lpugixml", "-lGL"};
+  std::istringstream linker(config::model_link_flags);
+  for (std::string w; linker >> w;) job.libraries.push_back(w);
+  job.libraries.insert(job.libraries.end(), {"-L", lib, "-Wl,-rpath," + lib, "-lvv_formats", "-lpugixml", "-lGL"});
   job.work = work;
   job.cache_dir = s.cache_dir;
   job.include = include;
