@@ -177,6 +177,7 @@ build_result build_unguarded(const std::string& path, const build_settings& s) {
                         .add(vvc::version())
                         .add(config::cxx_compiler)
                         .add(join(flags))
+                        .add(config::model_link_flags)
                         .add(stamp)
                         .add(model_dir)
                         .add(t.cpp)
