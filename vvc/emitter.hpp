@@ -9,7 +9,9 @@
 //   3. right after the last property block (or at the top): the traits,
 //      the model's context, `proxy`, and the vertex-creation helpers;
 //   4. at the end: the plugin's extern "C" entry points and the table of
-//      global meshes.
+//      global meshes. The functions among them that depend only on the
+//      declarations (vv_decl_*) are defined here unless VV_DECLARATIONS_APART
+//      says that emit_declarations' part is linked in.
 // Every source token is written on its .vvp line (#line), so compiler
 // errors and run-time errors (vv::where) name the .vvp file and line.
 #pragma once
@@ -26,5 +28,16 @@ struct emit_options {
 };
 
 std::string emit(const program& p, const emit_options& options);
+
+//! The part of the model that depends only on its declarations (everything
+//! up to the last property block, and the traits): vvlib's file reading
+//! and writing and the plugin's mesh functions for the model's traits, the
+//! bulk of a model's compile time. Compiled apart and linked with the
+//! program compiled with -DVV_DECLARATIONS_APART, it stands for what the
+//! program would otherwise compile itself; vvinterpreter caches it by its
+//! text, so an edit below the last property block compiles only the
+//! program. A definition of the program's that it still holds (a variable,
+//! say) shows in the compiled object, which vvinterpreter checks.
+std::string emit_declarations(const program& p, const emit_options& options);
 
 }  // namespace vvc

@@ -20,7 +20,9 @@ void run(translation& t, const source_file& file, std::string source_dir) {
         b.keyword->text == "edge" ? t.fields.edge : b.keyword->text == "vertex" ? t.fields.vertex : t.fields.mesh;
     for (const field& f : b.fields) names.emplace_back(f.name->text);
   }
-  t.cpp = emit(p, emit_options{version(), std::move(source_dir)});
+  emit_options options{version(), std::move(source_dir)};
+  t.cpp = emit(p, options);
+  t.declarations = emit_declarations(p, options);
   t.ok = true;
 }
 }  // namespace

@@ -12,6 +12,7 @@ namespace vvc {
 struct translation {
   bool ok = false;
   std::string cpp;          // the C++ (empty unless ok)
+  std::string declarations; // the part of it that depends only on its declarations (emit_declarations)
   source_set sources;       // the files the diagnostics point into
   diagnostics diag;
   //! The fields each property block declares, in order (empty without the

@@ -11,6 +11,8 @@
 
 #include <sys/time.h>
 
+#include <algorithm>
+#include <cstdio>
 #include <ctime>
 #include <filesystem>
 #include <fstream>
@@ -244,6 +246,169 @@ TEST(ModelCache, TwoBuildsOfOneModelAtOnceBothSucceed) {
   EXPECT_EQ(ran.status, 0) << report(ran);
   EXPECT_TRUE(contains(ran.out, model + found_in_cache)) << report(ran);
   EXPECT_TRUE(contains(ran.out, "model ran: 42\n")) << report(ran);
+}
+
+#ifdef VV_MODELS_LINK_WITH_LLD
+// Where lld is installed, models are linked with it (a third of the default
+// linker's time, every edit): it names itself in the plugin.
+TEST(ModelCache, PluginsAreLinkedWithLldWhereItIsInstalled) {
+  const std::string dir = fresh_dir("lld");
+  write(dir + "m.vvp", "#include <cstdio>\nstart { std::printf(\"linked\\n\"); }\n");
+  test_run::result compiled = run({"--compile-only", "--rebuild", dir + "m.vvp"});
+  ASSERT_EQ(compiled.status, 0) << report(compiled);
+  test_run::result comment = test_run::run({"readelf", "-p", ".comment", plugin_of(compiled)});
+  EXPECT_TRUE(contains(comment.out, "Linker: ") && contains(comment.out, " LLD ")) << comment.out;
+}
+#endif
+
+// ---- the declarations' part (vvinterpreter/compile/declarations_part.hpp) ----
+
+//! A cache of the test's own that shares the suite's precompiled header
+//! (hard links: nothing here changes it), so its decls/ folder holds this
+//! test's parts alone.
+std::string cache_with_header(const std::string& dir) {
+  test_run::result seeded = run({"--compile-only", dir + "seed.vvp"});  // the suite's header exists
+  EXPECT_EQ(seeded.status, 0) << report(seeded);
+  const std::string cache = dir + "cache";
+  fs::create_directories(cache);
+  fs::copy(std::string(VV_TEST_CACHE) + "/pch", cache + "/pch",
+           fs::copy_options::recursive | fs::copy_options::copy_symlinks | fs::copy_options::create_hard_links);
+  return cache;
+}
+
+//! The entries (keys) of the cache's decls/ folder.
+std::vector<std::string> parts_in(const std::string& cache) {
+  std::vector<std::string> keys;
+  for (const auto& e : fs::directory_iterator(cache + "/decls"))
+    if (fs::is_symlink(e.symlink_status())) keys.push_back(e.path().string());
+  return keys;
+}
+
+//! How the plugin --compile-only printed was built (its command file).
+std::string command_of(const test_run::result& compiled) {
+  return test_files::slurp(fs::path(plugin_of(compiled)).parent_path().string() + "/command");
+}
+
+const std::string apart_flag = "-DVV_DECLARATIONS_APART";
+
+// An edit below the last property block compiles the program alone and
+// links the part compiled for the declarations the first time.
+TEST(ModelCacheDeclarations, AnEditBelowThePropertyBlocksCompilesOnlyTheProgram) {
+  const std::string dir = fresh_dir("apart_edit");
+  write(dir + "seed.vvp", "start {}\n");
+  const std::string cache = cache_with_header(dir);
+  const std::string model = dir + "m.vvp";
+  const std::string head = "#include <cstdio>\nvertex { double h; };\nmesh S;\n";
+  write(model, head + "start { vertex v; v$h = 1.5; add v to S; std::printf(\"h=%g in %zu\\n\", v$h, S.size()); }\n");
+  test_run::result first = run_in(dir, cache, {"--batch", model});
+  ASSERT_EQ(first.status, 0) << report(first);
+  EXPECT_TRUE(contains(first.out, "h=1.5 in 1\n")) << report(first);
+  ASSERT_EQ(parts_in(cache).size(), 1u);
+  const std::string part = fs::canonical(parts_in(cache)[0]).string();
+  EXPECT_EQ(test_files::slurp(part + "/verdict"), "usable");
+  const auto compiled_at = fs::last_write_time(part + "/declarations.o");
+
+  write(model, head + "start { vertex v; v$h = 2.5; add v to S; std::printf(\"h=%g in %zu\\n\", v$h, S.size()); }\n");
+  test_run::result edited = run_in(dir, cache, {"--compile-only", model});
+  ASSERT_EQ(edited.status, 0) << report(edited);
+  // One compiler run: the program, linked with the part as it was.
+  std::string command = command_of(edited);
+  EXPECT_EQ(std::count(command.begin(), command.end(), '\n'), 1) << command;
+  EXPECT_TRUE(contains(command, apart_flag)) << command;
+  EXPECT_TRUE(contains(command, " " + part + "/declarations.o ")) << command;
+  EXPECT_EQ(parts_in(cache).size(), 1u);
+  EXPECT_EQ(fs::last_write_time(part + "/declarations.o"), compiled_at);
+  test_run::result ran = run_in(dir, cache, {"--batch", model});
+  EXPECT_EQ(ran.status, 0) << report(ran);
+  EXPECT_TRUE(contains(ran.out, "h=2.5 in 1\n")) << report(ran);
+
+  // The compiler's errors about the program still name its lines.
+  write(model, head + "start { vertex v; v$h = no_such_value; }\n");
+  test_run::result broken = run_in(dir, cache, {"--batch", model});
+  EXPECT_EQ(broken.status, 1) << report(broken);
+  EXPECT_TRUE(contains(broken.err, model + ":4:25: error: 'no_such_value' was not declared in this scope")) << report(broken);
+}
+
+// Declarations that keep state of their own (here a static counter that
+// every new vertex's property reads) would have two copies of it, the
+// part's and the program's: such a model is compiled whole.
+TEST(ModelCacheDeclarations, DeclarationsThatHoldStateAreCompiledWithTheProgram) {
+  const std::string dir = fresh_dir("apart_state");
+  write(dir + "seed.vvp", "start {}\n");
+  const std::string cache = cache_with_header(dir);
+  const std::string model = dir + "m.vvp";
+  write(model,
+        "#include <cstdio>\n"
+        "static int made = 0;\n"
+        "static int next_id() { return ++made; }\n"
+        "vertex { int id = next_id(); };\n"
+        "mesh S;\n"
+        "start { S.readXMLFile(\"" VV_SOURCE_DIR "/models/pyramid.vvm\"); vertex v;\n"
+        "  std::printf(\"vertex %d of %d made\\n\", v$id, made); }\n");
+  test_run::result ran = run_in(dir, cache, {"--batch", model});
+  ASSERT_EQ(ran.status, 0) << report(ran);
+  // One counter: every vertex's properties made count (a chunk of vertex
+  // slots makes them a thousand at a time, its old copies too), so the
+  // count the program reads is at least the number of its new vertex.
+  std::size_t at = ran.out.find("vertex ");
+  ASSERT_NE(at, std::string::npos) << report(ran);
+  int id = 0, made = 0;
+  ASSERT_EQ(std::sscanf(ran.out.c_str() + at, "vertex %d of %d made", &id, &made), 2) << report(ran);
+  EXPECT_GE(id, 7) << report(ran);
+  EXPECT_GE(made, id) << report(ran);
+  ASSERT_EQ(parts_in(cache).size(), 1u);
+  EXPECT_EQ(test_files::slurp(parts_in(cache)[0] + "/verdict"), "writable data of its own (_ZL4made)");
+  test_run::result again = run_in(dir, cache, {"--compile-only", "--rebuild", model});
+  ASSERT_EQ(again.status, 0) << report(again);
+  EXPECT_FALSE(contains(command_of(again), apart_flag)) << command_of(again);
+}
+
+// A part that does not compile on its own (a function whose return type is
+// deduced from a body it does not hold) leaves the model compiled whole,
+// at once from then on.
+TEST(ModelCacheDeclarations, DeclarationsThatDoNotCompileApartAreCompiledWithTheProgram) {
+  const std::string dir = fresh_dir("apart_fails");
+  write(dir + "seed.vvp", "start {}\n");
+  const std::string cache = cache_with_header(dir);
+  const std::string model = dir + "m.vvp";
+  const std::string head = "#include <cstdio>\nauto scale() { return 2.0; }\nvertex { double h = scale(); };\n";
+  write(model, head + "start { vertex v; std::printf(\"h=%g\\n\", v$h); }\n");
+  test_run::result ran = run_in(dir, cache, {"--batch", model});
+  ASSERT_EQ(ran.status, 0) << report(ran);
+  EXPECT_TRUE(contains(ran.out, "h=2\n")) << report(ran);
+  ASSERT_EQ(parts_in(cache).size(), 1u);
+  EXPECT_EQ(test_files::slurp(parts_in(cache)[0] + "/verdict"), "the declarations' part does not compile");
+
+  write(model, head + "start { vertex v; std::printf(\"h=%g!\\n\", v$h); }\n");
+  test_run::result edited = run_in(dir, cache, {"--compile-only", model});
+  ASSERT_EQ(edited.status, 0) << report(edited);
+  std::string command = command_of(edited);
+  EXPECT_EQ(std::count(command.begin(), command.end(), '\n'), 1) << command;
+  EXPECT_FALSE(contains(command, apart_flag)) << command;
+}
+
+// A damaged part is found out before it is linked: compiled again, with
+// one line saying why.
+TEST(ModelCacheDeclarations, DamagedPartIsCompiledAgainWithANote) {
+  const std::string dir = fresh_dir("apart_damaged");
+  write(dir + "seed.vvp", "start {}\n");
+  const std::string cache = cache_with_header(dir);
+  const std::string model = dir + "m.vvp";
+  const std::string head = "#include <cstdio>\nvertex { double h; };\n";
+  write(model, head + "start { vertex v; v$h = 3; std::printf(\"h=%g\\n\", v$h); }\n");
+  test_run::result first = run_in(dir, cache, {"--compile-only", model});
+  ASSERT_EQ(first.status, 0) << report(first);
+  ASSERT_EQ(parts_in(cache).size(), 1u);
+  const std::string object = fs::canonical(parts_in(cache)[0]).string() + "/declarations.o";
+  const std::uintmax_t size = fs::file_size(object);
+  fs::resize_file(object, 4096);
+
+  write(model, head + "start { vertex v; v$h = 4; std::printf(\"h=%g\\n\", v$h); }\n");
+  test_run::result ran = run_in(dir, cache, {"--batch", model});
+  EXPECT_EQ(ran.status, 0) << report(ran);
+  EXPECT_EQ(ran.err, model + ": note: the cached declarations' part was damaged (declarations.o has 4096 bytes, " +
+                         std::to_string(size) + " expected); it was compiled again\n");
+  EXPECT_TRUE(contains(ran.out, "h=4\n")) << report(ran);
 }
 
 }  // namespace

@@ -10,8 +10,10 @@
 #include "app/files.hpp"
 #include "compile/build_config.hpp"
 #include "compile/compiler_messages.hpp"
+#include "compile/dependencies.hpp"
 #include "compile/hashing.hpp"
 #include "compile/model_cache.hpp"
+#include "compile/model_compile.hpp"
 #include "compile/model_path.hpp"
 #include "compile/precompiled_header.hpp"
 #include "compile/process.hpp"
@@ -27,10 +29,6 @@ double ms_since(std::chrono::steady_clock::time_point t) {
   return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t).count();
 }
 
-bool ends_with(const std::string& s, const std::string& tail) {
-  return s.size() >= tail.size() && s.compare(s.size() - tail.size(), tail.size(), tail) == 0;
-}
-
 // A sanitizer build of the interpreter instruments the models it compiles
 // too, unless VV_SANITIZE_MODELS=0: the host stays instrumented, and a
 // model compiles in half the time (the test suite's host tests use this;
@@ -38,6 +36,12 @@ bool ends_with(const std::string& s, const std::string& tail) {
 bool instrument_models() {
   const char* setting = std::getenv("VV_SANITIZE_MODELS");
   return setting == nullptr || std::string(setting) != "0";
+}
+
+// Instrumented models are compiled whole: the sanitizers give every object
+// state of its own (their module constructors and global descriptions).
+bool instrumented(const std::vector<std::string>& flags) {
+  return std::any_of(flags.begin(), flags.end(), [](const std::string& f) { return f.rfind("-fsanitize", 0) == 0; });
 }
 
 // The options every model and the precompiled header share (they must
@@ -76,26 +80,6 @@ std::string join(const std::vector<std::string>& argv) {
   return s;
 }
 
-// The files a plugin was built from, other than vvlib's and the system's,
-// with their content hashes (to tell whether a cached build is still good).
-std::string dependency_list(const std::string& depfile, const std::string& include) {
-  std::string text = read_file(depfile).value_or("");
-  std::string out;
-  std::istringstream words(text);
-  for (std::string w; words >> w;) {
-    if (w == "\\" || ends_with(w, ":") || w.rfind(include, 0) == 0 || w.rfind("/usr/", 0) == 0) continue;
-    if (!ends_with(w, ".cpp")) out += content_hash().add(read_file(w).value_or("")).hex() + " " + w + "\n";
-  }
-  return out;
-}
-
-bool dependencies_unchanged(const std::string& list) {
-  std::istringstream lines(list);
-  for (std::string hash, path; lines >> hash >> path;)
-    if (content_hash().add(read_file(path).value_or("")).hex() != hash) return false;
-  return true;
-}
-
 }  // namespace
 
 std::string vvlib_include_dir() {
@@ -124,18 +108,6 @@ bool is_plugin_file(const std::string& path) {
   char magic[4] = {};
   return in.read(magic, 4) && magic[0] == 0x7f && magic[1] == 'E' && magic[2] == 'L' && magic[3] == 'F';
 }
-
-namespace {
-
-// The user headers a build read, from its dependency list.
-std::vector<std::string> dependency_paths(const std::string& list) {
-  std::vector<std::string> out;
-  std::istringstream lines(list);
-  for (std::string hash, path; lines >> hash >> path;) out.push_back(path);
-  return out;
-}
-
-}  // namespace
 
 
 namespace {
@@ -206,6 +178,7 @@ build_result build_unguarded(const std::string& path, const build_settings& s) {
                         .add(vvc::version())
                         .add(config::cxx_compiler)
                         .add(join(flags))
+                        .add(config::model_link_flags)
                         .add(stamp)
                         .add(model_dir)
                         .add(t.cpp)
@@ -253,24 +226,43 @@ build_result build_unguarded(const std::string& path, const build_settings& s) {
   }
   // The polygon formats come compiled, from vv_formats (M.readFile("x.obj")).
   std::string lib = vvlib_library_dir();
-  auto command = [&](const std::string& header_dir) {
+  compile_job job;
+  std::istringstream linker(config::model_link_flags);
+  for (std::string w; linker >> w;) job.libraries.push_back(w);
+  job.libraries.insert(job.libraries.end(), {"-L", lib, "-Wl,-rpath," + lib, "-lvv_formats", "-lpugixml", "-lGL"});
+  job.work = work;
+  job.cache_dir = s.cache_dir;
+  job.include = include;
+  if (s.declarations_apart && !instrumented(flags)) {
+    job.declarations = t.declarations;
+    job.declarations_key = content_hash()
+                               .add(vvc::version())
+                               .add(config::cxx_compiler)
+                               .add(join(flags))
+                               .add(stamp)
+                               .add(model_dir)
+                               .add(t.declarations)
+                               .hex();
+  }
+  auto compiler = [&](const std::string& header_dir) {
     std::vector<std::string> argv = {config::cxx_compiler};
     if (!header_dir.empty()) argv.insert(argv.end(), {"-I", header_dir});
     argv.insert(argv.end(), flags.begin(), flags.end());
-    argv.insert(argv.end(), {"-Wall", "-Wextra", "-I", model_dir, "-shared", "-MD", "-MF", work + "/model.d",
-                             "-o", work + "/model.so", work + "/model.cpp", "-L", lib, "-Wl,-rpath," + lib,
-                             "-lvv_formats", "-lpugixml", "-lGL"});
+    argv.insert(argv.end(), {"-Wall", "-Wextra", "-I", model_dir});
     return argv;
   };
-  std::vector<std::string> argv = command(pch);
-  process_result c = run_process(argv);
-  if (c.status != 0 && !pch.empty() && unreadable_precompiled_header(c.output)) {
+  job.compiler = compiler(pch);
+  compile_outcome compiled = compile_model(job);
+  if (compiled.result.status != 0 && !pch.empty() && unreadable_precompiled_header(compiled.result.output)) {
     // Damaged in a way its size does not show: build it again, once.
     notes += path + ": note: the compiler could not read the cached precompiled vvlib header; it was built again\n";
     discard_precompiled_header(pch);
-    argv = command(precompiled_header_dir(header, damage, header_error));
-    c = run_process(argv);
+    job.compiler = compiler(precompiled_header_dir(header, damage, header_error));
+    compiled = compile_model(job);
   }
+  std::istringstream compile_notes(compiled.notes);
+  for (std::string note; std::getline(compile_notes, note);) notes += path + ": " + note + "\n";
+  const process_result& c = compiled.result;
   r.compile_ms = ms_since(t1);
   message_sources sources{include, t.cpp, {t.fields.edge, t.fields.vertex, t.fields.mesh}};
   std::string about_model = compiler_messages(c.output, sources);  // in the built spelling: cached so
@@ -284,7 +276,7 @@ build_result build_unguarded(const std::string& path, const build_settings& s) {
   }
   std::string deps = dependency_list(work + "/model.d", include);
   bool stored = write_file(work + "/deps", deps) && write_file(work + "/warnings", about_model) &&
-                write_file(work + "/command", join(argv) + "\n") &&  // how it was built, for whoever looks
+                write_file(work + "/command", compiled.commands) &&  // how it was built, for whoever looks
                 cache::write_manifest(work, build_files);            // last: the build is whole
   // Every build gets a folder of its own, so what a process loaded is never
   // overwritten; the key then names the newest.

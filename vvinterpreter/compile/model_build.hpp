@@ -15,6 +15,10 @@ struct build_settings {
   int optimization = 1;   // -O level for models
   bool debug = false;     // -g -O0, for gdb (the generated C++ stays in the cache entry)
   bool force = false;     // compile even when a cached plugin exists
+  //! Link the part of the model that depends only on its declarations from
+  //! the cache (compiled once for them) rather than compile it every time
+  //! (declarations_part.hpp). The plugin is the same either way.
+  bool declarations_apart = true;
   //! Called when the sources have been read and the compiler is about to
   //! start (not for a build found in the cache).
   std::function<void()> compiling;
