@@ -70,6 +70,7 @@ class vertex {
   template <class T = Tr>
   typename T::vertex_props& props(where w = where::here()) const {
     if (!id_) raise(w, "$", [] { return std::string("property access on the null vertex"); });
+    ctx_->note_props_use(id_, w);
     return ctx_->props(id_);
   }
   template <class T = Tr>
