@@ -135,6 +135,9 @@ class parser {
   bool parse_make_list(const std::string& w, std::string_view then, std::vector<pieces>& list);
   bool edit_follows();
   stmt_ptr parse_forall();
+  //! `parallel forall` (parser_parallel.cpp).
+  stmt_ptr parse_parallel_forall();
+  void check_parallel_body(const stmt& s, bool loop_level, const token& loop);
   bool parse_vertex_declaration(stmt& s);
   void body_statements(stmt_list& out);
 

@@ -80,6 +80,7 @@ enum class stmt_kind {
   try_,         // try children[0] (catch head children[i])*
   edit,         // a vv edit statement (see edit_kind)
   forall,       // forall name in V children[0]
+  parallel_forall,  // parallel forall name in M children[0] (tok: `parallel`)
   vertex_decl,  // vertex declarators ;
 };
 

@@ -27,6 +27,7 @@
 // thread met it.
 #pragma once
 
+#include "detail/nb_access.hpp"
 #include "detail/parallel_run.hpp"
 #include "mesh.hpp"
 
@@ -45,6 +46,18 @@ void parallel_for_each(const mesh<Tr>& m, Fn&& fn, where w = where::here()) {
 template <class Tr, class Fn>
 void parallel_for_each(where w, const mesh<Tr>& m, Fn&& fn) {
   parallel_for_each(m, std::forward<Fn>(fn), w);
+}
+
+namespace detail {
+template <class T>
+constexpr bool always_false = false;
+}
+//! `parallel forall x in v` over a vertex: refused when compiled (vvc
+//! refuses the operands it can see are vertices).
+template <class V, class Fn, detail::if_vertex_like<V> = 0>
+void parallel_for_each(where, const V&, Fn&&) {
+  static_assert(detail::always_false<V>,
+                "only a loop over a mesh can be parallel: this is a vertex (drop 'parallel' to visit its neighbours)");
 }
 
 //! The threads a loop over m would use now (1 inside another parallel
