@@ -152,7 +152,10 @@ class emitter {
     if (!p_.mesh) s += "struct vv_mesh_props : vv::no_props {};\n";
     s +=
         "struct vv_traits : vv::traits<vv_vertex_props, vv_edge_props, vv_mesh_props> {\n"
-        "  static vv::context<vv_traits>& context();\n"
+        "  static vv::context<vv_traits>& context();\n";
+    // Without parallel loops a handle copy costs one test less.
+    if (!p_.parallel_loops) s += "  static constexpr bool parallel_loops = false;\n";
+    s +=
         "};\n"
         "static vv::context<vv_traits> vv_model;\n"
         "vv::context<vv_traits>& vv_traits::context() { return vv_model; }\n"

@@ -169,6 +169,7 @@ class parser {
   std::size_t pos_ = 0;
   int nesting_ = 0;           // groups, operands and statements open now
   bool gave_up_ = false;      // nested past max_nesting: the rest is not parsed
+  bool parallel_loops_ = false;  // a parallel forall was parsed (program::parallel_loops)
   //! Guards recursion: past max_nesting the input is given up on (with an
   //! error), so no input can exhaust the stack.
   bool enter();

@@ -15,6 +15,7 @@ stmt_ptr parser::parse_parallel_forall() {
   stmt_ptr s = parse_forall();
   if (s->kind != stmt_kind::forall || !s->name || s->operands.empty() || s->children.empty()) return s;
   s->kind = stmt_kind::parallel_forall;
+  parallel_loops_ = true;
   s->tok = word;
   const pieces& over = s->operands[0];
   if (over.size() == 1 && (over[0].kind == piece_kind::old_state || over[0].kind == piece_kind::query))

@@ -169,6 +169,10 @@ struct program {
   std::size_t last_property_item = 0;      // index into items; items.size() if none
   std::vector<const token*> global_meshes; // names of top-level `mesh` variables
   std::vector<parameter> parameters;       // `param` globals, in source order
+  //! A `parallel forall`, or algorithms::MassSpring (whose steps are
+  //! parallel loops), appears: the model's handles count as parallel loops
+  //! need (vv::traits::parallel_loops).
+  bool parallel_loops = false;
 };
 
 }  // namespace vvc

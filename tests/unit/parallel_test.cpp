@@ -303,4 +303,67 @@ TEST(ParallelSynchronise, CopiesALargeMeshAsInOrderAndKeepsCountsRight) {
   EXPECT_EQ(olds[0], olds[1]);
 }
 
+// A model without parallel loops (as vvc makes a program without `parallel
+// forall`): its handle copies count without the test for parallel loops,
+// so a loop that copies handles runs in order, with the same result and
+// right counts; a synchronise of plain data, which copies no handle, is
+// still shared out.
+struct sequential_props {
+  Pt pos;
+};
+struct sequential_traits : vv::traits<sequential_props> {
+  static constexpr bool parallel_loops = false;
+};
+
+TEST(ParallelLoop, RunsInOrderInAModelWithoutParallelLoops) {
+  vv::context<sequential_traits> ctx;
+  ctx.threads = 2;
+  vv::mesh<sequential_traits> S(ctx);
+  std::vector<vv::vertex<sequential_traits>> at;
+  const int n = 4096;
+  for (int i = 0; i < n; ++i) {
+    vv::vertex<sequential_traits> v = ctx.new_vertex();
+    v->pos = Pt(i, 0, 0);
+    S.add(v);
+    at.push_back(v);
+  }
+  for (int i = 0; i < n; ++i) vv::make_nb(at[i], {at[(i + 1) % n], at[(i + n - 1) % n]});
+  EXPECT_EQ(vv::parallel_threads(S), 1u);
+  vv::synchronise(S);  // shared out: plain data
+  std::vector<double> order;
+  vv::parallel_for_each(S, [&](vv::vertex<sequential_traits> v) {
+    double sum = 0;
+    for (vv::vertex<sequential_traits> u : vv::each(vv::old(v))) sum += vv::old(u)->pos.x();
+    v->pos = Pt(sum / 2, 0, 0);
+    order.push_back(vv::old(v)->pos.x());  // in order: no other thread appends
+  });
+  ASSERT_EQ(order.size(), std::size_t(n));
+  for (int i = 0; i < n; ++i) ASSERT_EQ(order[i], double(i));
+  EXPECT_EQ(at[0]->pos.x(), (1 + n - 1) / 2.0);
+  EXPECT_EQ(at[5]->pos.x(), 5.0);
+  for (const auto& v : at) ASSERT_EQ(ctx.refs(v.slot()), 2u);  // mesh + table
+}
+
+TEST(ParallelSynchronise, SharesOutPlainPropertiesEvenWithoutParallelLoops) {
+  // Plain data: the synchronise copies no handle, so it needs no counting
+  // apart; its old state is the same as in order.
+  for (unsigned threads : {1u, 2u}) {
+    vv::context<sequential_traits> ctx;
+    ctx.threads = threads;
+    vv::mesh<sequential_traits> S(ctx);
+    std::vector<vv::vertex<sequential_traits>> at;
+    for (int i = 0; i < 20000; ++i) {
+      at.push_back(ctx.new_vertex());
+      at.back()->pos = Pt(i, 2 * i, 3 * i);
+      S.add(at.back());
+    }
+    for (int i = 0; i + 1 < 20000; i += 2) vv::make_nb(at[i], {at[i + 1]});
+    vv::synchronise(S);
+    for (int i = 0; i < 20000; ++i) {
+      ASSERT_EQ(vv::old(at[i])->pos, Pt(i, 2 * i, 3 * i));
+      ASSERT_EQ(vv::valence(vv::old(at[i])), i % 2 ? 0u : 1u);
+    }
+  }
+}
+
 }  // namespace

@@ -46,6 +46,7 @@
 #include <string>
 #include <vector>
 
+#include "detail/inline.hpp"
 #include "detail/neighbourhood.hpp"
 #include "detail/parallel_scope.hpp"
 #include "detail/thread_counts.hpp"
@@ -178,14 +179,19 @@ class context {
   }
 
   // Inside a parallel loop each thread counts apart (counts_apart_): a
-  // plain increment of a shared count would lose updates.
-  void retain(std::uint32_t id) noexcept {
-    if (__builtin_expect(counts_apart_, 0)) detail::this_thread_counts.change(id, 1);
-    else ++refs(id);
+  // plain increment of a shared count would lose updates. Every handle
+  // copy comes here: the rest is out of line, so this stays small enough
+  // to inline at the models' -O1, and a model without parallel loops
+  // (Tr::parallel_loops false) does not even test.
+  VV_INLINE void retain(std::uint32_t id) noexcept {
+    if constexpr (Tr::parallel_loops)
+      if (__builtin_expect(counts_apart_, 0)) return count_on_this_thread(id, 1);
+    ++refs_[id];
   }
-  void release(std::uint32_t id) noexcept {
-    if (__builtin_expect(counts_apart_, 0)) detail::this_thread_counts.change(id, -1);
-    else if (--refs(id) == 0) ++suspects_;
+  VV_INLINE void release(std::uint32_t id) noexcept {
+    if constexpr (Tr::parallel_loops)
+      if (__builtin_expect(counts_apart_, 0)) return count_on_this_thread(id, -1);
+    if (--refs_[id] == 0) ++suspects_;
   }
 
   //! The shared record handed out when edge records have no fields.
@@ -297,6 +303,9 @@ class context {
   }
 
   std::uint32_t allocate_slot(const where& w);
+  [[gnu::noinline]] static void count_on_this_thread(std::uint32_t id, std::int32_t by) noexcept {
+    detail::this_thread_counts.change(id, by);
+  }
   [[gnu::noinline]] void watched_edit(std::uint32_t id, const char* op, const where& w) {
     if (parallel_) refuse_in_parallel(w, op, "edit a neighbourhood");
     if (id >= last_edit_.size()) last_edit_.resize(std::max<std::size_t>(next_slot_, id + 1));

@@ -14,10 +14,12 @@
 #include <atomic>
 #include <cstddef>
 #include <cstdint>
+#include <cstdlib>
 #include <exception>
 #include <limits>
 #include <mutex>
 #include <thread>
+#include <type_traits>
 #include <vector>
 
 #ifdef _OPENMP
@@ -34,23 +36,38 @@ inline unsigned machine_threads() noexcept {
   return n ? n : 1;
 }
 
-//! Loops with fewer positions than this per thread run in order on the
-//! calling thread: starting the others would cost more than they save.
-constexpr std::size_t parallel_min_per_thread = 512;
 //! Positions handed to a thread at a time.
 constexpr std::size_t parallel_block = 1024;
 
+//! The fewest iterations per thread worth starting threads for: smaller
+//! loops run in order on the calling thread, as starting the others would
+//! cost more than they save. 512, or VV_PARALLEL_GRAIN from the
+//! environment (the tests set 1 to run the examples' small loops on every
+//! thread).
+inline std::size_t parallel_grain() {
+  static const std::size_t grain = [] {
+    const char* text = std::getenv("VV_PARALLEL_GRAIN");
+    const long n = text ? std::atol(text) : 0;
+    return n > 0 ? static_cast<std::size_t>(n) : std::size_t(512);
+  }();
+  return grain;
+}
+
 //! Threads a loop of n positions on ctx uses: 1 inside another loop, in
-//! strict mode and without OpenMP.
+//! strict mode, without OpenMP, and when the loop copies handles
+//! (copies_handles) in a model without parallel loops (Tr::parallel_loops);
+//! fewer for a loop of fewer than parallel_grain() (times grain_factor)
+//! positions per thread.
 template <class Tr>
-unsigned team_size(const context<Tr>& ctx, std::size_t n, std::size_t min_per_thread = parallel_min_per_thread) {
+unsigned team_size(const context<Tr>& ctx, std::size_t n, std::size_t grain_factor = 1, bool copies_handles = true) {
 #ifdef _OPENMP
   if (ctx.parallel_loop() || ctx.strict_parallel) return 1;
+  if (copies_handles && !Tr::parallel_loops) return 1;
   std::size_t t = ctx.threads ? ctx.threads : machine_threads();
-  t = std::min(t, std::max<std::size_t>(1, n / min_per_thread));
+  t = std::min(t, std::max<std::size_t>(1, n / (parallel_grain() * grain_factor)));
   return static_cast<unsigned>(t);
 #else
-  (void)ctx, (void)n, (void)min_per_thread;
+  (void)ctx, (void)n, (void)grain_factor, (void)copies_handles;
   return 1;
 #endif
 }
@@ -96,13 +113,13 @@ class parallel_scope {
 template <class Tr, class Visit>
 void run_on_team(context<Tr>& ctx, std::size_t n, unsigned team, Visit&& visit) {
 #ifdef _OPENMP
-  ctx.count_apart(team);
+  if constexpr (Tr::parallel_loops) ctx.count_apart(team);
   first_failure failure;
   const std::ptrdiff_t blocks = static_cast<std::ptrdiff_t>((n + parallel_block - 1) / parallel_block);
 #pragma omp parallel num_threads(team)
   {
     const unsigned thread = static_cast<unsigned>(omp_get_thread_num());
-    ctx.thread_count_tables().bind(thread);
+    if constexpr (Tr::parallel_loops) ctx.thread_count_tables().bind(thread);
 #pragma omp for schedule(dynamic, 1)
     for (std::ptrdiff_t b = 0; b < blocks; ++b) {
       const std::size_t first = static_cast<std::size_t>(b) * parallel_block;
@@ -118,7 +135,7 @@ void run_on_team(context<Tr>& ctx, std::size_t n, unsigned team, Visit&& visit) 
     }
     thread_count_tables::unbind();
   }
-  ctx.merge_thread_counts();
+  if constexpr (Tr::parallel_loops) ctx.merge_thread_counts();
   failure.rethrow();
 #else
   (void)team;
@@ -189,8 +206,13 @@ void synchronise_members(context<Tr>& ctx, const std::vector<std::uint32_t>& slo
     ctx.writable_old_nb(id) = ctx.nb(id);
     ctx.writable_old_props(id) = ctx.props(id);
   };
-  // A copy is cheap: it takes more of them to be worth a thread.
-  const unsigned team = team_size(ctx, slots.size(), 8 * parallel_min_per_thread);
+  // A copy is cheap: it takes more of them to be worth a thread. Copying
+  // properties and records of plain data copies no handle: no count
+  // changes, so it may be shared out in any model.
+  using Props = typename Tr::vertex_props;
+  using Records = typename Tr::edge_props;
+  constexpr bool plain = std::is_trivially_copyable<Props>::value && std::is_trivially_copyable<Records>::value;
+  const unsigned team = team_size(ctx, slots.size(), 8, !plain);
   if (team <= 1) {
     for (std::uint32_t id : slots)
       if (id) copy(id);

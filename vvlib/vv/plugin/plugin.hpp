@@ -35,7 +35,8 @@
 #include "proxy.hpp"
 
 // 5: one descriptor (vv_plugin_descriptor) instead of one symbol per entry.
-#define VV_PLUGIN_ABI_VERSION 5
+// 6: vv_plugin_settings::threads (parallel forall).
+#define VV_PLUGIN_ABI_VERSION 6
 //! The one symbol a model exports.
 #define VV_PLUGIN_DESCRIPTOR_SYMBOL "vv_plugin_descriptor"
 #define VV_PLUGIN_EXPORT extern "C" __attribute__((visibility("default")))
