@@ -2,6 +2,7 @@
 # check the export with vvm_check (counts, golden file).
 # -DINTERPRETER -DCHECK -DCACHE -DMODEL -DSTEPS -DOUT [-DMESH] [-DMAXFACE]
 # [-DVERTICES -DEDGES -DFACES] -DGOLDEN [-DTOLERANCE] [-DOPT (--opt)]
+# [-DTHREADS (--threads)]
 # With VV_UPDATE_GOLDEN=1 in the environment (scripts/update-golden sets it
 # for its own run only) the export is written to GOLDEN instead.
 set(args --batch --quiet --cache ${CACHE} --steps ${STEPS} --export ${OUT})
@@ -10,6 +11,9 @@ if(MESH)
 endif()
 if(NOT "${OPT}" STREQUAL "")
   list(APPEND args --opt ${OPT})
+endif()
+if(THREADS)
+  list(APPEND args --threads ${THREADS})
 endif()
 execute_process(COMMAND ${INTERPRETER} ${args} ${MODEL} RESULT_VARIABLE status ERROR_VARIABLE err)
 if(NOT status EQUAL 0)
