@@ -109,17 +109,19 @@ class parallel_scope {
 
 //! Runs visit(pos, thread) for every pos in [0, n) on `team` threads
 //! (thread < team), in a parallel scope the caller has entered. Counts
-//! are kept apart meanwhile; the first failure is thrown again after.
+//! are kept apart meanwhile, unless visit copies no handle
+//! (copies_handles false); the first failure is thrown again after.
 template <class Tr, class Visit>
-void run_on_team(context<Tr>& ctx, std::size_t n, unsigned team, Visit&& visit) {
+void run_on_team(context<Tr>& ctx, std::size_t n, unsigned team, Visit&& visit, bool copies_handles = true) {
 #ifdef _OPENMP
-  if constexpr (Tr::parallel_loops) ctx.count_apart(team);
+  const bool apart = Tr::parallel_loops && copies_handles;
+  if (apart) ctx.count_apart(team);
   first_failure failure;
   const std::ptrdiff_t blocks = static_cast<std::ptrdiff_t>((n + parallel_block - 1) / parallel_block);
 #pragma omp parallel num_threads(team)
   {
     const unsigned thread = static_cast<unsigned>(omp_get_thread_num());
-    if constexpr (Tr::parallel_loops) ctx.thread_count_tables().bind(thread);
+    if (apart) ctx.thread_count_tables().bind(thread);
 #pragma omp for schedule(dynamic, 1)
     for (std::ptrdiff_t b = 0; b < blocks; ++b) {
       const std::size_t first = static_cast<std::size_t>(b) * parallel_block;
@@ -135,11 +137,10 @@ void run_on_team(context<Tr>& ctx, std::size_t n, unsigned team, Visit&& visit) 
     }
     thread_count_tables::unbind();
   }
-  if constexpr (Tr::parallel_loops) ctx.merge_thread_counts();
+  if (apart) ctx.merge_thread_counts();
   failure.rethrow();
 #else
-  (void)team;
-  (void)ctx;
+  (void)team, (void)ctx, (void)copies_handles;
   for (std::size_t pos = 0; pos < n; ++pos) visit(pos, 0u);
 #endif
 }
@@ -223,9 +224,12 @@ void synchronise_members(context<Tr>& ctx, const std::vector<std::uint32_t>& slo
     if (id) ctx.make_old_state(id);
   parallel_loop loop{where{}};
   parallel_scope<Tr> scope(ctx, loop);
-  run_on_team(ctx, slots.size(), team, [&](std::size_t pos, unsigned) {
-    if (std::uint32_t id = slots[pos]) copy(id);
-  });
+  run_on_team(
+      ctx, slots.size(), team,
+      [&](std::size_t pos, unsigned) {
+        if (std::uint32_t id = slots[pos]) copy(id);
+      },
+      !plain);
 }
 
 }  // namespace vv::detail
