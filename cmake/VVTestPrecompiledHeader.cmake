@@ -17,4 +17,7 @@ target_precompile_headers(vv_test_pch PRIVATE
 
 function(vv_use_test_pch target)
   target_precompile_headers(${target} REUSE_FROM vv_test_pch)
+  # The header was built with vvlib's options, OpenMP's (-fopenmp) among
+  # them: a test that does not use vvlib needs them too to use it.
+  target_link_libraries(${target} PRIVATE vv::vvlib)
 endfunction()

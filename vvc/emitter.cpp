@@ -228,10 +228,11 @@ class emitter {
     if (!p_.edge) s += "struct vv_edge_props : vv::no_props {};\nusing edge = vv_edge_props;\n";
     if (!p_.vertex) s += "struct vv_vertex_props : vv::no_props {};\n";
     if (!p_.mesh) s += "struct vv_mesh_props : vv::no_props {};\n";
-    return s +
-           "struct vv_traits : vv::traits<vv_vertex_props, vv_edge_props, vv_mesh_props> {\n"
-           "  static vv::context<vv_traits>& context();\n"
-           "};\n";
+    s += "struct vv_traits : vv::traits<vv_vertex_props, vv_edge_props, vv_mesh_props> {\n"
+         "  static vv::context<vv_traits>& context();\n";
+    // Without parallel loops a handle copy costs one test less.
+    if (!p_.parallel_loops) s += "  static constexpr bool parallel_loops = false;\n";
+    return s + "};\n";
   }
 
   // The traits, the model's context and the helpers the program calls.
@@ -247,8 +248,11 @@ class emitter {
         "static vv::plugin::exchange vv_exchange;\n"
         "[[maybe_unused]] static vv::proxy& proxy = vv_model.host();\n"
         "// The model's random numbers, seeded by the host (--seed).\n"
-        "[[maybe_unused]] static std::mt19937_64& vv_random() { return vv_model.random(); }\n"
-        "[[maybe_unused]] static vertex vv_new_vertex() { return vv_model.new_vertex(); }\n";
+        "// Where is the caller's line: both are errors inside a parallel forall.\n"
+        "[[maybe_unused]] static std::mt19937_64& vv_random(vv::where vv_w = vv::where::here()) {\n"
+        "  return vv_model.random(vv_w);\n}\n"
+        "[[maybe_unused]] static vertex vv_new_vertex(vv::where vv_w = vv::where::here()) {\n"
+        "  return vv_model.new_vertex(vv_w);\n}\n";
     // vertex x(a1, a2, ...): the properties in declaration order.
     std::vector<std::string> fields;
     if (p_.vertex)
@@ -259,7 +263,8 @@ class emitter {
       s += ">\n[[maybe_unused]] static vertex vv_new_vertex_with(";
       for (std::size_t i = 0; i < n; ++i)
         s += (i ? ", vv_A" : "vv_A") + std::to_string(i) + "&& vv_a" + std::to_string(i);
-      s += ") {\n  vertex vv_v = vv_model.new_vertex();\n  vv_vertex_props& vv_p = vv_v.props();\n";
+      s += ", vv::where vv_w = vv::where::here()) {\n  vertex vv_v = vv_model.new_vertex(vv_w);\n"
+           "  vv_vertex_props& vv_p = vv_v.props();\n";
       for (std::size_t i = 0; i < n; ++i)
         s += "  vv_p." + fields[i] + " = static_cast<vv_A" + std::to_string(i) + "&&>(vv_a" +
              std::to_string(i) + ");\n";
@@ -425,11 +430,13 @@ class emitter {
           if (value_init_.count(p.close)) w_.text("{}");
         }
         break;
-      case piece_kind::body:
+      case piece_kind::body: {
+        in_loop_of_own body(*this, false);  // a function's or lambda's: continue is not ours
         w_.token(*p.tok);
         for (const stmt_ptr& s : p.body) emit(*s);
         if (p.close) w_.token(*p.close);
         break;
+      }
       case piece_kind::old_state:
         w_.at(*p.tok);
         w_.text("vv::old(");
@@ -480,7 +487,15 @@ class emitter {
         if (s.end) w_.token(*s.end);
         break;
       case stmt_kind::simple:
-        emit(s.head);
+        // The body of a parallel forall is a lambda: `continue` ends the
+        // iteration by returning from it.
+        if (continue_ends_iteration_ && s.head.size() == 1 && s.head[0].kind == piece_kind::token &&
+            s.head[0].tok->is_word("continue")) {
+          w_.at(*s.head[0].tok);
+          w_.text("return");
+        } else {
+          emit(s.head);
+        }
         if (s.end) w_.token(*s.end);
         break;
       case stmt_kind::preproc: w_.preproc(*s.tok); break;
@@ -496,18 +511,23 @@ class emitter {
         break;
       case stmt_kind::while_:
       case stmt_kind::for_:
-      case stmt_kind::switch_:
+      case stmt_kind::switch_: {
+        // A switch's continue is still the enclosing loop's.
+        in_loop_of_own loop(*this, s.kind == stmt_kind::switch_ && continue_ends_iteration_);
         w_.token(*s.tok);
         emit(s.head);
         emit(*s.children[0]);
         break;
-      case stmt_kind::do_while:
+      }
+      case stmt_kind::do_while: {
+        in_loop_of_own loop(*this, false);
         w_.token(*s.tok);
         emit(*s.children[0]);
         w_.text("while");
         emit(s.head);
         w_.text(";");
         break;
+      }
       case stmt_kind::label: emit(s.head); break;
       case stmt_kind::try_:
         w_.token(*s.tok);
@@ -518,8 +538,9 @@ class emitter {
           emit(*s.children[i + 1]);
         }
         break;
-      case stmt_kind::forall:
+      case stmt_kind::forall: {
         if (!s.name || s.operands.empty() || s.children.empty()) break;
+        in_loop_of_own loop(*this, false);
         w_.at(*s.tok);
         w_.text("for (vertex ");
         w_.token(*s.name);
@@ -528,6 +549,23 @@ class emitter {
         w_.text("))");
         emit(*s.children[0]);
         break;
+      }
+      case stmt_kind::parallel_forall: {
+        // vv::parallel_for_each(where, M, [&](vertex v) { body });
+        if (!s.name || s.operands.empty() || s.children.empty()) break;
+        in_loop_of_own loop(*this, true);
+        w_.at(*s.tok);
+        w_.text("vv::parallel_for_each(vv::where::here(), ");
+        emit(s.operands[0]);
+        w_.text(", [&]([[maybe_unused]] vertex ");
+        w_.token(*s.name);
+        w_.text(")");
+        const bool compound = s.children[0]->kind == stmt_kind::compound;
+        if (!compound) w_.text("{");
+        emit(*s.children[0]);
+        w_.text(compound ? ");" : "});");
+        break;
+      }
       case stmt_kind::edit: edit(s); break;
       case stmt_kind::vertex_decl:
         for (const vertex_declarator& d : s.declarators) {
@@ -567,6 +605,24 @@ class emitter {
     }
     w_.text(");");
   }
+
+  // Whether `continue` here ends an iteration of a parallel forall (a
+  // return from its lambda): set for its body, cleared for the loops and
+  // function bodies inside it.
+  class in_loop_of_own {
+   public:
+    in_loop_of_own(emitter& e, bool parallel) : e_(e), was_(e.continue_ends_iteration_) {
+      e.continue_ends_iteration_ = parallel;
+    }
+    in_loop_of_own(const in_loop_of_own&) = delete;
+    in_loop_of_own& operator=(const in_loop_of_own&) = delete;
+    ~in_loop_of_own() { e_.continue_ends_iteration_ = was_; }
+
+   private:
+    emitter& e_;
+    bool was_;
+  };
+  bool continue_ends_iteration_ = false;
 
   const program& p_;
   const emit_options& o_;

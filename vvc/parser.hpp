@@ -135,6 +135,9 @@ class parser {
   bool parse_make_list(const std::string& w, std::string_view then, std::vector<pieces>& list);
   bool edit_follows();
   stmt_ptr parse_forall();
+  //! `parallel forall` (parser_parallel.cpp).
+  stmt_ptr parse_parallel_forall();
+  void check_parallel_body(const stmt& s, bool loop_level, const token& loop);
   bool parse_vertex_declaration(stmt& s);
   void body_statements(stmt_list& out);
 
@@ -166,6 +169,7 @@ class parser {
   std::size_t pos_ = 0;
   int nesting_ = 0;           // groups, operands and statements open now
   bool gave_up_ = false;      // nested past max_nesting: the rest is not parsed
+  bool parallel_loops_ = false;  // a parallel forall was parsed (program::parallel_loops)
   //! Guards recursion: past max_nesting the input is given up on (with an
   //! error), so no input can exhaust the stack.
   bool enter();

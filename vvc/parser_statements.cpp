@@ -115,6 +115,9 @@ stmt_ptr parser::parse_statement() {
       return s;
     }
     if (w == "forall") return parse_forall();
+    // `parallel` is a word of vv only before `forall` (reserved: no C++
+    // could read `parallel forall`).
+    if (w == "parallel" && peek(1).is_word("forall")) return parse_parallel_forall();
     // `foral v in M {...}`: reported, and read as the loop it was meant to
     // be (its body is a statement, which C++ would not end).
     if (peek(1).is_identifier() && peek(2).is_word("in"))

@@ -29,6 +29,9 @@ program parser::parse_program() {
       parse_top_declaration(p);
     }
   }
+  p.parallel_loops = parallel_loops_;
+  for (const token& t : toks_)
+    if (t.is_identifier() && t.text == "MassSpring") p.parallel_loops = true;
   p.last_property_item = p.items.size();
   for (std::size_t i = 0; i < p.items.size(); ++i)
     if (p.items[i].kind == top_item::property) p.last_property_item = i;

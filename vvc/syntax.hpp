@@ -80,6 +80,7 @@ enum class stmt_kind {
   try_,         // try children[0] (catch head children[i])*
   edit,         // a vv edit statement (see edit_kind)
   forall,       // forall name in V children[0]
+  parallel_forall,  // parallel forall name in M children[0] (tok: `parallel`)
   vertex_decl,  // vertex declarators ;
 };
 
@@ -169,6 +170,10 @@ struct program {
   std::size_t last_property_item = 0;      // index into items; items.size() if none
   std::vector<const token*> global_meshes; // names of top-level `mesh` variables
   std::vector<parameter> parameters;       // `param` globals, in source order
+  //! A `parallel forall`, or algorithms::MassSpring (whose steps are
+  //! parallel loops), appears: the model's handles count as parallel loops
+  //! need (vv::traits::parallel_loops).
+  bool parallel_loops = false;
 };
 
 }  // namespace vvc

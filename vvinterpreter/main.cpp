@@ -1,6 +1,7 @@
 // vvinterpreter: build, load and run vv models — in a window, or headless
 // for regression tests (see docs/interpreter.md).
 #include <cstdio>
+#include <cstdlib>
 
 #include "batch/batch.hpp"
 #include "app/options.hpp"
@@ -8,6 +9,12 @@
 #include "viewer/viewer.hpp"
 
 int main(int argc, char** argv) {
+  // A model's parallel loops (OpenMP, loaded with the model after this)
+  // wait at their ends. libgomp's default spins there for long: on a busy
+  // machine the spinning thread keeps the one it waits for off the CPU, and
+  // a loop takes ten times longer than on one thread. A short spin, then
+  // sleep, unless the user chose otherwise.
+  if (!std::getenv("OMP_WAIT_POLICY") && !std::getenv("GOMP_SPINCOUNT")) setenv("GOMP_SPINCOUNT", "10000", 0);
   vvi::parse_result p = vvi::parse_options(argc, argv);
   if (!p.ok) {
     std::fprintf(stderr, "%s", p.message.c_str());

@@ -9,6 +9,7 @@
 struct bench_result {
   double ms = 0;            // refinement only, mesh construction excluded
   double cpu_ms = 0;        // the same region in this thread's CPU time
+  double process_cpu_ms = 0;  // the same region in all threads' CPU time
   std::size_t bytes = 0;    // heap held by the refined mesh structure
   std::size_t vertices = 0, faces = 0;
   std::vector<std::array<double, 3>> positions;  // only if keep_positions

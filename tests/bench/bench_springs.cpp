@@ -4,7 +4,9 @@
 // mesh and the old neighbourhoods after a synchronise — against the same
 // step in plain C++ over arrays (compressed adjacency), in the same run.
 // Both must compute the same positions, bit for bit; the benchmark fails
-// otherwise.
+// otherwise. The vvlib step runs on the context's threads (vv/parallel.hpp):
+// it is timed on one thread and on --threads N (default 2), which must
+// give the same positions too, and the speed-up of N threads is printed.
 #include "bench_input.hpp"
 
 #include <algorithm>
@@ -14,6 +16,7 @@
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
+#include <cstring>
 #include <string>
 #include <vector>
 
@@ -52,7 +55,8 @@ struct vv_run {
   graph::mesh S{ctx};
   std::vector<vertex> order;
 
-  explicit vv_run(const bench_input& input) {
+  vv_run(const bench_input& input, unsigned threads) {
+    ctx.threads = threads;
     std::vector<std::vector<std::uint32_t>> faces;
     for (const auto& t : input.triangles) faces.push_back({t[0], t[1], t[2]});
     vv::build_from_faces(S, input.points, faces, "bench input");
@@ -153,27 +157,35 @@ int main(int argc, char** argv) {
   const int subdivisions = int_option(argc, argv, "--subdivisions", 5);  // 10,242 vertices
   const int steps = int_option(argc, argv, "--steps", 20);
   const int runs = int_option(argc, argv, "--runs", 5);
+  const unsigned threads = static_cast<unsigned>(std::max(1, int_option(argc, argv, "--threads", 2)));
   const bench_input input = make_icosphere(subdivisions);
   const parameters p;
-  std::printf("input: icosphere(%d), %zu vertices; %d mass-spring steps per run, %d runs\n", subdivisions,
-              input.points.size(), steps, runs);
+  std::printf("input: icosphere(%d), %zu vertices; %d mass-spring steps per run, %d runs; vvlib on 1 thread and on %u\n",
+              subdivisions, input.points.size(), steps, runs, threads);
 
-  std::vector<double> vv_ms, array_ms;
+  std::vector<double> vv_ms, vv_n_ms, array_ms;
   double max_difference = 0;
+  bool same_on_threads = true;
   for (int r = 0; r < runs; ++r) {
-    vv_run model(input);
+    vv_run model(input, 1), model_n(input, threads);
     array_run arrays(model, input);
-    double vv_fastest = 0, array_fastest = 0;
+    double vv_fastest = 0, vv_n_fastest = 0, array_fastest = 0;
     vv_ms.push_back(time_ms([&] { vv_fastest = model.steps(p, steps); }));
+    vv_n_ms.push_back(time_ms([&] { vv_n_fastest = model_n.steps(p, steps); }));
     array_ms.push_back(time_ms([&] { array_fastest = arrays.steps(p, steps); }));
     for (std::size_t i = 0; i < model.order.size(); ++i) {
       const Pt d = model.order[i]->pos - arrays.pos[i];
       max_difference = std::max({max_difference, std::fabs(d.x()), std::fabs(d.y()), std::fabs(d.z())});
+      same_on_threads = same_on_threads && std::memcmp(&model.order[i]->pos, &model_n.order[i]->pos, sizeof(Pt)) == 0 &&
+                        std::memcmp(&model.order[i]->vel, &model_n.order[i]->vel, sizeof(Pt)) == 0;
     }
     max_difference = std::max(max_difference, std::fabs(vv_fastest - array_fastest));
+    same_on_threads = same_on_threads && vv_fastest == vv_n_fastest;
   }
-  const double vv = median_of(vv_ms), arrays = median_of(array_ms);
+  const double vv = median_of(vv_ms), vv_n = median_of(vv_n_ms), arrays = median_of(array_ms);
   std::printf("same positions: %s (largest difference %g)\n", max_difference == 0 ? "yes" : "NO", max_difference);
-  std::printf("springs vv_ms=%.3f array_ms=%.3f ratio=%.3f\n", vv, arrays, vv / arrays);
-  return max_difference == 0 ? 0 : 1;
+  std::printf("same bytes on 1 and %u threads: %s\n", threads, same_on_threads ? "yes" : "NO");
+  std::printf("springs vv_ms=%.3f array_ms=%.3f ratio=%.3f vv_threads_ms=%.3f threads=%u speedup=%.3f\n", vv, arrays,
+              vv / arrays, vv_n, threads, vv / vv_n);
+  return max_difference == 0 && same_on_threads ? 0 : 1;
 }

@@ -87,7 +87,7 @@ bool read_all(int fd, void* data, std::size_t size)
       if (std::strcmp(plugin->meshes[i].name, "S") == 0) mesh = &plugin->meshes[i];
     if (!mesh) return void(problem = model.plugin + " has no global mesh S");
 
-    const vv_plugin_settings settings{model_dir.c_str(), 1, 0, 0};
+    const vv_plugin_settings settings{model_dir.c_str(), 1, 0, 0, model.threads};
     plugin->configure(&settings);
     if (const char* e = plugin->start()) return void(problem = e);
     const stopwatch timer;
@@ -107,6 +107,7 @@ bool read_all(int fd, void* data, std::size_t size)
   write_all(fd, header, sizeof header);
   write_all(fd, &result.ms, sizeof result.ms);
   write_all(fd, &result.cpu_ms, sizeof result.cpu_ms);
+  write_all(fd, &result.process_cpu_ms, sizeof result.process_cpu_ms);
   write_all(fd, problem.data(), problem.size());
   write_all(fd, positions.data(), positions.size() * sizeof(double));
   ::close(fd);
@@ -140,7 +141,8 @@ bench_result run_translated(const translated_model& model, const bench_input& in
   std::string problem;
   std::vector<double> positions;
   bool complete = read_all(fds[0], header, sizeof header) && read_all(fds[0], &result.ms, sizeof result.ms) &&
-                  read_all(fds[0], &result.cpu_ms, sizeof result.cpu_ms);
+                  read_all(fds[0], &result.cpu_ms, sizeof result.cpu_ms) &&
+                  read_all(fds[0], &result.process_cpu_ms, sizeof result.process_cpu_ms);
   if (complete) {
     problem.resize(header[0]);
     positions.resize(header[4]);

@@ -10,6 +10,7 @@
 struct translated_model {
   std::string plugin;  // the model's shared object
   std::string input;   // the file its start block reads from ../models/, e.g. "pyramid.vvm"
+  unsigned threads = 1;  // of its parallel loops (--threads)
 };
 
 // Each run is a fresh process (fork), so every run starts from the model's

@@ -9,21 +9,22 @@
 
 class stopwatch {
  public:
-  stopwatch() : wall_(std::chrono::steady_clock::now()), cpu_(cpu_ms()) {}
+  stopwatch() : wall_(std::chrono::steady_clock::now()), cpu_(cpu_ms()), process_cpu_(cpu_ms(CLOCK_PROCESS_CPUTIME_ID)) {}
   // Writes the time since construction into r.ms and r.cpu_ms.
   void stop(bench_result& r) const
   {
     r.ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - wall_).count();
     r.cpu_ms = cpu_ms() - cpu_;
+    r.process_cpu_ms = cpu_ms(CLOCK_PROCESS_CPUTIME_ID) - process_cpu_;
   }
 
  private:
-  static double cpu_ms()
+  static double cpu_ms(clockid_t clock = CLOCK_THREAD_CPUTIME_ID)
   {
     timespec t{};
-    clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
+    clock_gettime(clock, &t);
     return static_cast<double>(t.tv_sec) * 1e3 + static_cast<double>(t.tv_nsec) * 1e-6;
   }
   std::chrono::steady_clock::time_point wall_;
-  double cpu_;
+  double cpu_, process_cpu_;
 };

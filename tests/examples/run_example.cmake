@@ -2,7 +2,7 @@
 # check the export with vvm_check (counts, golden file).
 # -DINTERPRETER -DCHECK -DCACHE -DMODEL -DSTEPS -DOUT [-DMESH] [-DMAXFACE]
 # [-DVERTICES -DEDGES -DFACES] -DGOLDEN [-DTOLERANCE] [-DOPT (--opt)]
-# [-DUPDATE_GOLDEN=ON]
+# [-DUPDATE_GOLDEN=ON] [-DTHREADS (--threads)]
 # With -DUPDATE_GOLDEN=ON (the cache option VV_UPDATE_GOLDEN, as
 # docs/tutorial.md section 11 uses it) or VV_UPDATE_GOLDEN=1 in the
 # environment (scripts/update-golden sets it for its own run only) the
@@ -16,6 +16,9 @@ if(MESH)
 endif()
 if(NOT "${OPT}" STREQUAL "")
   list(APPEND args --opt ${OPT})
+endif()
+if(THREADS)
+  list(APPEND args --threads ${THREADS})
 endif()
 execute_process(COMMAND ${INTERPRETER} ${args} ${MODEL} RESULT_VARIABLE status ERROR_VARIABLE err)
 if(NOT status EQUAL 0)

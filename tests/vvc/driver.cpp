@@ -2,6 +2,7 @@
 // interpreter's batch mode will: configure, start, N steps, end, close.
 //
 //   driver [--steps N] [--model-dir DIR] [--expect-error TEXT] [--write MESH FILE]
+//          [--threads N] [--strict]
 //
 // Exits 0 when every CHECK in the program held (and at least one ran) and
 // no block failed, or, with --expect-error, when a block failed with a
@@ -16,7 +17,8 @@
 #include "vv_check.hpp"
 
 int main(int argc, char** argv) {
-  unsigned steps = 0;
+  unsigned steps = 0, threads = 0;
+  int strict = 0;
   std::string model_dir = ".", expected_error, write_mesh, write_path;
   for (int i = 1; i < argc; ++i) {
     std::string a = argv[i];
@@ -24,6 +26,8 @@ int main(int argc, char** argv) {
     else if (a == "--model-dir" && i + 1 < argc) model_dir = argv[++i];
     else if (a == "--expect-error" && i + 1 < argc) expected_error = argv[++i];
     else if (a == "--write" && i + 2 < argc) write_mesh = argv[++i], write_path = argv[++i];
+    else if (a == "--threads" && i + 1 < argc) threads = static_cast<unsigned>(std::atoi(argv[++i]));
+    else if (a == "--strict") strict = 1;
     else {
       std::cerr << "driver: bad argument " << a << "\n";
       return 2;
@@ -34,7 +38,7 @@ int main(int argc, char** argv) {
     std::cerr << "driver: plugin ABI " << model.abi_version << ", expected " << VV_PLUGIN_ABI_VERSION << "\n";
     return 2;
   }
-  vv_plugin_settings settings{model_dir.c_str(), 42, 0, 0};
+  vv_plugin_settings settings{model_dir.c_str(), 42, strict, 0, threads};
   model.configure(&settings);
 
   std::string error;

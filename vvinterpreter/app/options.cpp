@@ -15,7 +15,7 @@ namespace vvi {
 const char* usage_text =
     "usage: vvinterpreter [options] MODEL.vvp\n"
     "       vvinterpreter --batch [--steps N] [--end] [--export FILE] [--mesh NAME[,NAME...]]\n"
-    "                     [--max-face N] [--screenshot FILE.png --size WxH] [--seed S]\n"
+    "                     [--max-face N] [--screenshot FILE.png --size WxH] [--seed S] [--threads N]\n"
     "                     [--step-timeout SECONDS] [--set NAME=VALUE ...] [--plots FILE.csv]\n"
     "                     [--pick LABEL ...] [--color-by NAME] MODEL.vvp\n"
     "       vvinterpreter --list-params [--set NAME=VALUE ...] MODEL.vvp\n"
@@ -42,7 +42,11 @@ const char* usage_text =
     "  --size WxH         the screenshot's size (default 800x600)\n"
     "  --view YAW PITCH   turn the screenshot's view by these degrees (default 0 0)\n"
     "  --seed S           seed of the model's random numbers (default 0)\n"
-    "  --strict           reading the old state of a never-synchronised vertex is an error\n"
+    "  --strict           reading the old state of a never-synchronised vertex is an error, and\n"
+    "                     a parallel forall runs in order, checking that each iteration changes\n"
+    "                     only its own vertex's properties\n"
+    "  --threads N        threads of a parallel forall (default: the machine's cores); the\n"
+    "                     results do not depend on it\n"
     "  --set NAME=VALUE   give the parameter NAME (a `param` of the program) this value;\n"
     "                     repeatable\n"
     "  --list-params      print the parameters (name, type, value, range) and exit\n"
@@ -152,6 +156,9 @@ void numbers(CLI::App& app, options& o) {
     o.max_face = number(v, 3, ~0ull, "--max-face needs a number of corners (3 or more)");
   });
   with_value(app, "--seed", [&o](const std::string& v) { o.seed = number(v, 0, ~0ull, "--seed needs a non-negative number"); });
+  with_value(app, "--threads", [&o](const std::string& v) {
+    o.threads = static_cast<unsigned>(number(v, 1, 1024, "--threads needs a number of threads (1 to 1024)"));
+  });
   with_value(app, "--opt", [&o](const std::string& v) {
     o.optimization = static_cast<int>(number(v, 0, 3, "--opt needs a level from 0 to 3"));
   });

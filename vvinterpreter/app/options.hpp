@@ -26,6 +26,7 @@ struct options {
   double view_yaw = 0, view_pitch = 0;  // --view YAW PITCH (degrees, batch screenshots)
   std::uint64_t seed = 0;     // --seed S
   bool strict = false;        // --strict
+  unsigned threads = 0;       // --threads N (0: the machine's cores)
   bool check = false;         // --check
   //! --set NAME=VALUE, in order (NAME, VALUE).
   std::vector<std::pair<std::string, std::string>> parameter_values;

@@ -53,7 +53,9 @@ std::vector<std::string> common_flags(const build_settings& s, const std::string
                                 s.debug ? "-g" : "-g1", "-gdwarf-4", "-fPIC",
                                 "-fvisibility=hidden", "-fvisibility-inlines-hidden",
                                 // so that unloading a model really unloads it (rewind, reload)
-                                "-fno-gnu-unique"};
+                                "-fno-gnu-unique",
+                                // parallel forall (vv/parallel.hpp)
+                                "-fopenmp"};
   std::istringstream extra(instrument_models() ? config::sanitize_flags : "");
   for (std::string w; extra >> w;) f.push_back(w);
   f.push_back("-isystem");

@@ -22,6 +22,7 @@ session_settings session_settings_for(const options& o) {
   if (!is_plugin_file(o.model)) s.model_dir = absolute_folder_of(o.model);
   s.seed = o.seed;
   s.strict = o.strict;
+  s.threads = o.threads;
   s.check = o.check;
   return s;
 }

@@ -4,10 +4,12 @@
 #include <stdlib.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cstdint>
 #include <cstdio>
 #include <fstream>
+#include <thread>
 
 #include "runner/crash_report.hpp"
 #include "runner/fault_guard.hpp"
@@ -19,7 +21,8 @@ std::unique_ptr<session> session::load(const std::string& plugin_path, const ses
                                        std::string& error) {
   std::unique_ptr<plugin> p = plugin::open(plugin_path, error);
   if (!p) return nullptr;
-  vv_plugin_settings settings{s.model_dir.c_str(), s.seed, s.strict ? 1 : 0, s.check ? 1 : 0};
+  vv_plugin_settings settings{s.model_dir.c_str(), s.seed, s.strict ? 1 : 0, s.check ? 1 : 0,
+                              s.threads ? s.threads : std::max(1u, std::thread::hardware_concurrency())};
   p->model().configure(&settings);
   return std::unique_ptr<session>(new session(std::move(p), s.model, s.check));
 }

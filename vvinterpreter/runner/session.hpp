@@ -18,6 +18,7 @@ struct session_settings {
   std::uint64_t seed = 0;
   bool strict = false;    // reading a never-synchronised old state is an error
   bool check = false;     // check the neighbourhoods after start and every step
+  unsigned threads = 0;   // of a parallel forall (0: the machine's cores)
 };
 
 class session {

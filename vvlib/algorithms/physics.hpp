@@ -3,7 +3,11 @@
 //
 // Vertices need two properties of one point type (util::Point<double>):
 // `pos` and `vel`. A step reads only the old state saved by its own
-// synchronise, so its result does not depend on the order of the mesh.
+// synchronise, so its result does not depend on the order of the mesh, and
+// it runs on the context's threads (vv/parallel.hpp) with the same result
+// for any number of them. The callables it is given (rest lengths, forces)
+// run on those threads too: like the body of a `parallel forall`, they
+// must only read, and not create vertices or edit.
 //
 // Rest lengths are the program's choice, passed as a callable
 // `rest(v, n)` giving the rest length of the spring v-n (read it from the
@@ -23,7 +27,9 @@
 #include <vv/edges.hpp>
 #include <vv/iteration.hpp>
 #include <vv/mesh.hpp>
+#include <vv/parallel.hpp>
 #include <vv/queries.hpp>
+#include <vector>
 
 namespace algorithms {
 
@@ -213,18 +219,29 @@ class MassSpring {
   }
 
   //! One explicit Euler step of every vertex of the mesh (it synchronises
-  //! the mesh first). Returns the largest speed after the step.
+  //! the mesh first), on the context's threads. Returns the largest speed
+  //! after the step.
   template <class Mesh, class Rest, class Force = NoForce>
-  double step(Mesh& mesh, Rest rest, Force force = Force()) const {
-    vv::synchronise(mesh);
-    double fastest = 0;
-    for (V v : vv::each(mesh)) {
-      const point a = acceleration(v, rest, force);
-      v->pos = vv::old(v)->pos + dt * vv::old(v)->vel;
-      v->vel = vv::old(v)->vel + dt * a;
-      fastest = std::max(fastest, v->vel.length());
-    }
-    return fastest;
+  double step(Mesh& mesh, Rest rest, Force force = Force(), vv::where w = vv::where::here()) const {
+    vv::synchronise(mesh, w);
+    auto* ctx = mesh.ctx();
+    if (!ctx) return 0;
+    // The largest speed of each thread's vertices (a maximum does not
+    // depend on how the vertices were shared out).
+    struct alignas(64) fastest_of_thread {
+      double speed = 0;
+    };
+    std::vector<fastest_of_thread> fastest(vv::detail::team_size(*ctx, mesh.slots().size()));
+    vv::detail::for_each_member(*ctx, mesh.slots(), static_cast<unsigned>(fastest.size()), w,
+                                [&](V v, unsigned thread) {
+                                  const point a = acceleration(v, rest, force);
+                                  v->pos = vv::old(v)->pos + dt * vv::old(v)->vel;
+                                  v->vel = vv::old(v)->vel + dt * a;
+                                  fastest[thread].speed = std::max(fastest[thread].speed, v->vel.length());
+                                });
+    double result = 0;
+    for (const fastest_of_thread& f : fastest) result = std::max(result, f.speed);
+    return result;
   }
 
   //! Steps until settled (the largest speed after a step below

@@ -26,6 +26,13 @@
 // enough counts have dropped to zero since the last pass (so its cost is
 // amortised over that work), never inside a neighbourhood loop whose
 // snapshot holds uncounted slots, and on demand (collect_garbage).
+//
+// Parallel loops (vv/parallel.hpp). While one runs, the context is in a
+// parallel scope: the collector is paused, edits, vertex creation, mesh
+// changes and random numbers are errors, and the loop's threads keep their
+// reference count changes apart (detail/thread_counts.hpp), added to the
+// counts when the loop ends. Outside a loop the only cost is one test of a
+// byte per count change.
 #pragma once
 
 #include <algorithm>
@@ -33,12 +40,16 @@
 #include <cstdio>
 #include <functional>
 #include <memory>
+#include <mutex>
 #include <random>
 #include <set>
 #include <string>
 #include <vector>
 
+#include "detail/inline.hpp"
 #include "detail/neighbourhood.hpp"
+#include "detail/parallel_scope.hpp"
+#include "detail/thread_counts.hpp"
 #include "error.hpp"
 #include "traits.hpp"
 #include "plugin/proxy.hpp"
@@ -73,10 +84,10 @@ class context {
   }
 
   //! Create a vertex with value-initialised properties.
-  vertex<Tr> new_vertex() { return vertex<Tr>::from_slot(this, allocate_slot()); }
+  vertex<Tr> new_vertex(where w = where::here()) { return vertex<Tr>::from_slot(this, allocate_slot(w)); }
   //! Create a vertex with the given properties.
-  vertex<Tr> new_vertex(const vertex_props& p) {
-    std::uint32_t id = allocate_slot();
+  vertex<Tr> new_vertex(const vertex_props& p, where w = where::here()) {
+    std::uint32_t id = allocate_slot(w);
     props(id) = p;
     return vertex<Tr>::from_slot(this, id);
   }
@@ -92,7 +103,12 @@ class context {
   //! were freed. Does nothing (returns 0) inside a neighbourhood loop.
   std::size_t collect_garbage();
 
-  std::mt19937_64& random() noexcept { return rng_; }
+  //! The model's random numbers. Inside a parallel loop an error: the
+  //! numbers drawn would depend on the threads' timing.
+  std::mt19937_64& random(where w = where::here()) {
+    if (parallel_) refuse_in_parallel(w, "random", "draw random numbers");
+    return rng_;
+  }
   void seed(std::uint64_t s) { rng_.seed(s); }
 
   proxy& host() noexcept { return proxy_; }
@@ -101,15 +117,25 @@ class context {
   std::string base_dir;
   //! Reading the old state of a never-synchronised vertex is an error.
   bool strict_old_state = false;
+  //! Threads a parallel loop may use (vv/parallel.hpp); 0: the machine's
+  //! cores. The results do not depend on it.
+  unsigned threads = 0;
+  //! A parallel loop runs its iterations in order and checks that each
+  //! changes the properties of its own vertex only (the host's --strict).
+  bool strict_parallel = false;
   //! Where the library's warnings go (a host may collect them); stderr when unset.
   std::function<void(const std::string&)> warning_sink;
 
   //! Remember where each neighbourhood was last edited (vvinterpreter
   //! --check names that line when a neighbourhood is found broken).
-  void track_edits(bool on) { tracking_edits_ = on; }
-  //! On every edit: a test and a branch unless tracking is on.
-  void note_edit(std::uint32_t id, const where& w) {
-    if (tracking_edits_) record_edit(id, w);
+  void track_edits(bool on) {
+    tracking_edits_ = on;
+    watch_edits_ = tracking_edits_ || parallel_;
+  }
+  //! On every edit: a test and a branch unless tracking is on or a
+  //! parallel loop runs (then the edit is an error).
+  void note_edit(std::uint32_t id, const char* op, const where& w) {
+    if (watch_edits_) watched_edit(id, op, w);
   }
   struct edit_mark {
     where at;               //!< file null: not edited while tracked
@@ -123,6 +149,7 @@ class context {
   //! Says message once per key over the context's life, so that a file read
   //! every step warns once.
   void warn_once(const std::string& key, const std::string& message) {
+    std::lock_guard<std::mutex> lock(warned_mutex_);  // file objects may warn inside a parallel loop
     if (!warned_.insert(key).second) return;
     if (warning_sink) warning_sink(message);
     else std::fprintf(stderr, "%s\n", message.c_str());
@@ -145,29 +172,104 @@ class context {
   //! The old state to write (synchronise), made on first use.
   nb_type& writable_old_nb(std::uint32_t id) { return old_block_of(id).nb[id & mask]; }
   vertex_props& writable_old_props(std::uint32_t id) { return old_block_of(id).props[id & mask]; }
+  //! Makes the storage of id's old state (before threads write it).
+  void make_old_state(std::uint32_t id) { old_block_of(id); }
   bool is_live(std::uint32_t id) const noexcept {
     return id != 0 && id < next_slot_ && label(id) != 0;
   }
 
-  void retain(std::uint32_t id) noexcept { ++refs(id); }
-  void release(std::uint32_t id) noexcept {
-    if (--refs(id) == 0) ++suspects_;
+  // Inside a parallel loop each thread counts apart (counts_apart_): a
+  // plain increment of a shared count would lose updates. Every handle
+  // copy comes here: the rest is out of line, so this stays small enough
+  // to inline at the models' -O1, and a model without parallel loops
+  // (Tr::parallel_loops false) does not even test.
+  VV_INLINE void retain(std::uint32_t id) noexcept {
+    if constexpr (Tr::parallel_loops)
+      if (__builtin_expect(counts_apart_, 0)) return count_on_this_thread(id, 1);
+    ++refs_[id];
+  }
+  VV_INLINE void release(std::uint32_t id) noexcept {
+    if constexpr (Tr::parallel_loops)
+      if (__builtin_expect(counts_apart_, 0)) return count_on_this_thread(id, -1);
+    if (--refs_[id] == 0) ++suspects_;
   }
 
   //! The shared record handed out when edge records have no fields.
   edge_props& empty_record() noexcept { return empty_record_; }
 
   //! Keeps the collector from running while slots are held uncounted.
+  //! Inside a parallel loop, which pauses it for its whole run, it does
+  //! nothing (the loop's threads would race on the pause count).
   class gc_pause {
    public:
-    explicit gc_pause(context& c) noexcept : c_(&c) { ++c_->gc_pauses_; }
+    explicit gc_pause(context& c) noexcept : c_(c.parallel_ ? nullptr : &c) {
+      if (c_) ++c_->gc_pauses_;
+    }
     gc_pause(const gc_pause&) = delete;
     gc_pause& operator=(const gc_pause&) = delete;
-    ~gc_pause() { --c_->gc_pauses_; }
+    ~gc_pause() {
+      if (c_) --c_->gc_pauses_;
+    }
 
    private:
     context* c_;
   };
+
+  // ---- parallel loops (vv/parallel.hpp) ----
+  //! The loop running on this context, or null.
+  const detail::parallel_loop* parallel_loop() const noexcept { return parallel_; }
+  //! An operation a parallel loop's body must not do: the error, naming
+  //! its line and the loop's.
+  [[noreturn, gnu::noinline, gnu::cold]] void refuse_in_parallel(const where& w, const char* op,
+                                                               const char* what) const {
+    throw error(w, op, detail::parallel_refusal(*parallel_, what));
+  }
+  //! For the properties' accessors: in a strict parallel loop, note that
+  //! the iteration used vertex id's properties.
+  void note_props_use(std::uint32_t id, const where& w) {
+    if (__builtin_expect(watch_props_, 0)) watched_props_use(id, w);
+  }
+  //! Enters a parallel loop (vv/parallel.hpp): pauses the collector and
+  //! turns on the checks. Loops do not overlap on a context.
+  void begin_parallel(detail::parallel_loop& loop) noexcept {
+    parallel_ = &loop;
+    watch_edits_ = true;
+    ++gc_pauses_;
+  }
+  void end_parallel() noexcept {
+    parallel_ = nullptr;
+    watch_edits_ = tracking_edits_;
+    watch_props_ = false;
+    counts_apart_ = false;
+    --gc_pauses_;
+  }
+  //! Counts on the threads' own tables from now on; merge_thread_counts
+  //! adds them to the shared ones.
+  void count_apart(std::size_t thread_count) {
+    thread_counts_.prepare(thread_count, next_slot_);
+    counts_apart_ = true;
+  }
+  detail::thread_count_tables& thread_count_tables() noexcept { return thread_counts_; }
+  void merge_thread_counts() noexcept {
+    counts_apart_ = false;
+    // A count that ends at zero is a suspect for the collector; one that
+    // passed through zero meanwhile (in an order the threads' timing
+    // chose) is not, so the collector runs at the same points whatever
+    // the number of threads.
+    thread_counts_.merge(refs_.data(), [this] { ++suspects_; });
+  }
+  //! Strict loops: watch the properties used in each iteration.
+  void watch_props(bool on) noexcept { watch_props_ = on; }
+  //! The bytes of vertex id's properties and current neighbourhood (with
+  //! its records), to compare before and after an iteration.
+  void snapshot(std::uint32_t id, std::vector<unsigned char>& out) {
+    const vertex_props& p = props(id);
+    const nb_type& n = nb(id);
+    const auto* pb = reinterpret_cast<const unsigned char*>(&p);
+    const auto* nbb = reinterpret_cast<const unsigned char*>(n.data());
+    out.assign(pb, pb + sizeof(vertex_props));
+    out.insert(out.end(), nbb, nbb + n.size() * sizeof(entry));
+  }
 
  private:
   static constexpr std::uint32_t mask = chunk_size - 1;
@@ -200,10 +302,17 @@ class context {
     return *c.old;
   }
 
-  std::uint32_t allocate_slot();
-  [[gnu::noinline]] void record_edit(std::uint32_t id, const where& w) {
+  std::uint32_t allocate_slot(const where& w);
+  [[gnu::noinline]] static void count_on_this_thread(std::uint32_t id, std::int32_t by) noexcept {
+    detail::this_thread_counts.change(id, by);
+  }
+  [[gnu::noinline]] void watched_edit(std::uint32_t id, const char* op, const where& w) {
+    if (parallel_) refuse_in_parallel(w, op, "edit a neighbourhood");
     if (id >= last_edit_.size()) last_edit_.resize(std::max<std::size_t>(next_slot_, id + 1));
     last_edit_[id] = {w, ++edits_};
+  }
+  [[gnu::noinline]] void watched_props_use(std::uint32_t id, const where& w) {
+    parallel_->strict->note_use(id, w, [&](std::vector<unsigned char>& out) { snapshot(id, out); });
   }
   void free_slot(std::uint32_t id);
 
@@ -223,7 +332,14 @@ class context {
   std::mt19937_64 rng_{5489u};
   proxy proxy_;
   std::set<std::string> warned_;  // keys of the warnings said
+  std::mutex warned_mutex_;
   bool tracking_edits_ = false;
+  // Tested on hot paths: each one byte, read-only while a loop's threads run.
+  bool watch_edits_ = false;   // tracking_edits_ or a parallel loop
+  bool counts_apart_ = false;  // retain/release go to this_thread_counts
+  bool watch_props_ = false;   // a strict parallel loop notes property uses
+  detail::parallel_loop* parallel_ = nullptr;
+  detail::thread_count_tables thread_counts_;
   std::vector<edit_mark> last_edit_;  // by slot, while tracking
   std::uint64_t edits_ = 0;
   edge_props empty_record_{};
@@ -234,7 +350,8 @@ class context {
 };
 
 template <class Tr>
-std::uint32_t context<Tr>::allocate_slot() {
+std::uint32_t context<Tr>::allocate_slot(const where& w) {
+  if (parallel_) refuse_in_parallel(w, "vertex", "create a vertex");
   if (suspects_ >= gc_threshold_ && gc_pauses_ == 0) collect_garbage();
   if (next_label_ == 0) throw error(where{}, "vertex", "the 2^32 vertex labels are used up");
   std::uint32_t id;

@@ -43,7 +43,10 @@ class symmetric_sync {
     entry_traits::rec(to_nb[static_cast<std::uint32_t>(to)], ctx->empty_record()) =
         entry_traits::rec(from_nb[static_cast<std::uint32_t>(from)], ctx->empty_record());
   }
-  void arm(const vertex<Tr>& a, const vertex<Tr>& b) {
+  void arm(const vertex<Tr>& a, const vertex<Tr>& b, const where& w) {
+    // It writes b's record: another vertex's, which a parallel loop's
+    // iteration must leave alone.
+    if (a.ctx()->parallel_loop()) a.ctx()->refuse_in_parallel(w, "|", "write the record of another vertex's half-edge");
     a_ = a;
     b_ = b;
   }
@@ -58,6 +61,7 @@ class symmetric_sync {
 template <class Tr>
 typename Tr::edge_props& edge(const vertex<Tr>& a, const vertex<Tr>& b, where w = where::here()) {
   auto s = detail::view(a, "^", w);
+  s.ctx->note_props_use(a.slot(), w);
   auto& nb = a.ctx()->nb(a.slot());
   return detail::record_at(s.ctx, nb, a, b, "^", w);
 }
@@ -76,7 +80,7 @@ template <class Tr>
 typename Tr::edge_props& sym_edge(const vertex<Tr>& a, const vertex<Tr>& b, where w = where::here(),
                                   detail::symmetric_sync<Tr>&& sync = detail::symmetric_sync<Tr>()) {
   auto& rec = edge(a, b, w);
-  sync.arm(a, b);
+  sync.arm(a, b, w);
   return rec;
 }
 template <class Tr>

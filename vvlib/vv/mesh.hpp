@@ -18,6 +18,7 @@
 #include <vector>
 
 #include "detail/member_index.hpp"
+#include "detail/parallel_run.hpp"
 #include "vertex.hpp"
 
 namespace vv {
@@ -49,7 +50,7 @@ class mesh : public Tr::mesh_props {
   mesh(mesh&& o) noexcept : props_type(std::move(static_cast<props_type&>(o))), ctx_(o.ctx_) {
     if (o.iterating_ > 0) {
       copy_members(o);
-      o.clear();
+      o.clear_members();
       return;
     }
     order_.swap(o.order_);
@@ -61,6 +62,7 @@ class mesh : public Tr::mesh_props {
   //! `M = N`: the same set (vertices are shared) and the same properties.
   mesh& operator=(const mesh& o) {
     if (this == &o) return *this;
+    check_unchanging(where{}, "=");
     static_cast<props_type&>(*this) = o;
     if (iterating_ > 0) {
       assign_during_iteration(o);
@@ -72,14 +74,15 @@ class mesh : public Tr::mesh_props {
   }
   mesh& operator=(mesh&& o) noexcept(false) {
     if (this == &o) return *this;
+    check_unchanging(where{}, "=");
     if (iterating_ > 0 || o.iterating_ > 0) {  // `N = std::move(S)` or std::swap inside a loop
       *this = static_cast<const mesh&>(o);
-      o.clear();
+      o.clear_members();
       return *this;
     }
     static_cast<props_type&>(*this) = std::move(static_cast<props_type&>(o));
     swap_members(o);
-    o.clear();
+    o.clear_members();
     return *this;
   }
   ~mesh() { release_all(); }
@@ -88,6 +91,7 @@ class mesh : public Tr::mesh_props {
   void add(const vertex_type& v, where w = where::here()) {
     if (!v) raise(w, "add", [] { return std::string("cannot add the null vertex to a mesh"); });
     adopt_context(v, w);
+    check_unchanging(w, "add");
     if (find_position(v.slot()) >= 0) return;
     ctx_->retain(v.slot());
     order_.push_back(v.slot());
@@ -96,7 +100,8 @@ class mesh : public Tr::mesh_props {
   }
 
   //! `remove v from M;` (no effect if v is not a member)
-  void remove(const vertex_type& v, where = where::here()) {
+  void remove(const vertex_type& v, where w = where::here()) {
+    check_unchanging(w, "remove");
     if (!v || v.ctx() != ctx_) return;
     std::ptrdiff_t pos = find_position(v.slot());
     if (pos < 0) return;
@@ -115,6 +120,7 @@ class mesh : public Tr::mesh_props {
 
   //! `merge M with N;` / `M += N`
   void merge(const mesh& o, where w = where::here()) {
+    check_unchanging(w, "merge");
     if (&o == this) return;
     // Room for all of o at once (at least 1.5x growth, so repeated small
     // merges stay linear): a big merge then leaves no slack behind.
@@ -130,17 +136,9 @@ class mesh : public Tr::mesh_props {
   }
 
   //! `clear M;`
-  void clear() noexcept {
-    release_all();
-    index_.clear();
-    if (iterating_ > 0) {
-      std::fill(order_.begin(), order_.end(), 0u);
-      holes_ = order_.size();
-    } else {
-      order_.clear();
-      holes_ = 0;
-    }
-    count_ = 0;
+  void clear(where w = where::here()) {
+    check_unchanging(w, "clear");
+    clear_members();
   }
 
   std::size_t size() const noexcept { return count_; }
@@ -161,6 +159,10 @@ class mesh : public Tr::mesh_props {
   void writeFile(const std::string& path, where w = where::here()) const;
 
   context_type* ctx() const noexcept { return ctx_; }
+  //! Inside a parallel loop a mesh must not change: the error, at w.
+  void check_unchanging(const where& w, const char* op) const {
+    if (ctx_ && ctx_->parallel_loop()) ctx_->refuse_in_parallel(w, op, "change a mesh");
+  }
   //! Bytes held by the set (for memory reports).
   std::size_t storage_bytes() const noexcept {
     return order_.capacity() * sizeof(std::uint32_t) + index_.bytes();
@@ -168,11 +170,18 @@ class mesh : public Tr::mesh_props {
 
   // ---- iteration: members present at the start, in insertion order,
   // skipping those removed before their turn ----
+  // Inside a parallel loop, whose threads may iterate a mesh at once, an
+  // iterator leaves the count of iterations alone: the mesh cannot change
+  // there anyway.
   class iterator {
    public:
-    iterator(const iterator& o) noexcept : m_(o.m_), pos_(o.pos_), end_(o.end_) { ++m_->iterating_; }
+    iterator(const iterator& o) noexcept : m_(o.m_), pos_(o.pos_), end_(o.end_), counted_(o.counted_) {
+      if (counted_) ++m_->iterating_;
+    }
     iterator& operator=(const iterator&) = delete;
-    ~iterator() { m_->end_iteration(); }
+    ~iterator() {
+      if (counted_) m_->end_iteration();
+    }
     vertex_type operator*() const { return vertex_type::from_slot(m_->ctx_, m_->order_[pos_]); }
     iterator& operator++() {
       ++pos_;
@@ -185,8 +194,9 @@ class mesh : public Tr::mesh_props {
 
    private:
     friend class mesh;
-    explicit iterator(const mesh* m) noexcept : m_(m), pos_(0), end_(m->order_.size()) {
-      ++m_->iterating_;
+    explicit iterator(const mesh* m) noexcept
+        : m_(m), pos_(0), end_(m->order_.size()), counted_(!m->ctx_ || !m->ctx_->parallel_loop()) {
+      if (counted_) ++m_->iterating_;
       skip_holes();
     }
     void skip_holes() noexcept {
@@ -194,6 +204,7 @@ class mesh : public Tr::mesh_props {
     }
     const mesh* m_;
     std::size_t pos_, end_;
+    bool counted_;
   };
   iterator begin() const noexcept { return iterator(this); }
   typename iterator::sentinel end() const noexcept { return {}; }
@@ -245,6 +256,18 @@ class mesh : public Tr::mesh_props {
     for (std::uint32_t id : o.order_)
       if (id) add(vertex_type::from_slot(o.ctx_, id), where{});
   }
+  void clear_members() noexcept {
+    release_all();
+    index_.clear();
+    if (iterating_ > 0) {
+      std::fill(order_.begin(), order_.end(), 0u);
+      holes_ = order_.size();
+    } else {
+      order_.clear();
+      holes_ = 0;
+    }
+    count_ = 0;
+  }
   void release_all() noexcept {
     for (std::uint32_t id : order_)
       if (id) ctx_->release(id);
@@ -275,14 +298,13 @@ context<Tr>& context_of(const mesh<Tr>& m, where w = where::here()) {
 
 //! `synchronise M;`: save the current state of every member as its old
 //! state (properties, neighbourhood with records, flag).
+//! A large mesh is copied on the context's threads (vv/parallel.hpp).
 template <class Tr>
-void synchronise(const mesh<Tr>& m, where = where::here()) {
+void synchronise(const mesh<Tr>& m, where w = where::here()) {
   context<Tr>* ctx = m.ctx();
-  for (std::uint32_t id : m.slots()) {
-    if (!id) continue;
-    ctx->writable_old_nb(id) = ctx->nb(id);
-    ctx->writable_old_props(id) = ctx->props(id);
-  }
+  if (!ctx) return;
+  m.check_unchanging(w, "synchronise");
+  detail::synchronise_members(*ctx, m.slots());
 }
 template <class Tr>
 void synchronize(const mesh<Tr>& m, where w = where::here()) {

@@ -24,6 +24,11 @@ struct traits {
   using edge_props = EdgeProps;
   using mesh_props = MeshProps;
   static constexpr unsigned inline_valence = InlineValence;
+  //! Parallel loops (vv/parallel.hpp) may share this model's vertices out to
+  //! threads. A model without them sets it false (vvc does so for a program
+  //! with no `parallel forall`): each handle copy then costs one test less,
+  //! and its loops run in order.
+  static constexpr bool parallel_loops = true;
 };
 
 template <class Tr>

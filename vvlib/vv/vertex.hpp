@@ -26,11 +26,11 @@ class vertex {
   //! The null vertex (label 0).
   vertex() noexcept = default;
   vertex(std::nullptr_t) noexcept {}  // `vertex v = 0;`
-  vertex(const vertex& o) noexcept : ctx_(o.ctx_), id_(o.id_) {
+  VV_INLINE vertex(const vertex& o) noexcept : ctx_(o.ctx_), id_(o.id_) {
     if (id_) ctx_->retain(id_);
   }
   vertex(vertex&& o) noexcept : ctx_(o.ctx_), id_(o.id_) { o.id_ = 0; }
-  vertex& operator=(const vertex& o) noexcept {
+  VV_INLINE vertex& operator=(const vertex& o) noexcept {
     if (o.id_) o.ctx_->retain(o.id_);
     drop();
     ctx_ = o.ctx_;
@@ -46,7 +46,7 @@ class vertex {
     }
     return *this;
   }
-  ~vertex() { drop(); }
+  VV_INLINE ~vertex() { drop(); }
 
   //! A vertex converts to bool, the non-null test: in conditions and
   //! `static_cast<bool>` through this operator, and implicitly (`return v;`
@@ -70,6 +70,7 @@ class vertex {
   template <class T = Tr>
   typename T::vertex_props& props(where w = where::here()) const {
     if (!id_) raise(w, "$", [] { return std::string("property access on the null vertex"); });
+    ctx_->note_props_use(id_, w);
     return ctx_->props(id_);
   }
   template <class T = Tr>
@@ -81,7 +82,7 @@ class vertex {
   context_type* ctx() const noexcept { return ctx_; }
   std::uint32_t slot() const noexcept { return id_; }
   //! A new counted handle to a slot.
-  static vertex from_slot(context_type* c, std::uint32_t id) noexcept {
+  VV_INLINE static vertex from_slot(context_type* c, std::uint32_t id) noexcept {
     if (id) c->retain(id);
     return vertex(c, id);
   }
@@ -106,7 +107,7 @@ class vertex {
 
  private:
   vertex(context_type* c, std::uint32_t id) noexcept : ctx_(c), id_(id) {}
-  void drop() noexcept {
+  VV_INLINE void drop() noexcept {
     if (id_) ctx_->release(id_);
     id_ = 0;
   }

@@ -19,6 +19,7 @@
 #include "mesh.hpp"
 #include "faces.hpp"
 #include "insert.hpp"
+#include "parallel.hpp"
 #include "path.hpp"
 #include "queries.hpp"
 #include "target_first.hpp"

@@ -46,12 +46,12 @@ VV_INLINE nb_view<Tr> view(const old_vertex<Tr>& v, const char*, const where&) n
 template <class Tr>
 VV_INLINE const vertex<Tr>& edit_target(const vertex<Tr>& v, const char* op, const where& w) {
   if (!v) raise(w, op, [] { return std::string("the target is the null vertex"); });
-  v.ctx()->note_edit(v.slot(), w);
+  v.ctx()->note_edit(v.slot(), op, w);
   return v;
 }
 template <class Tr>
-VV_INLINE vertex<Tr> edit_target(const old_vertex<Tr>& v, const char*, const where& w) {
-  v.ctx()->note_edit(v.slot(), w);
+VV_INLINE vertex<Tr> edit_target(const old_vertex<Tr>& v, const char* op, const where& w) {
+  v.ctx()->note_edit(v.slot(), op, w);
   return v.current();
 }
 

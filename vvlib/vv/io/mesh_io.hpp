@@ -77,6 +77,7 @@ void write_mesh(const mesh<Tr>& m, const std::string& path, const export_options
 
 template <class Tr>
 void mesh<Tr>::readFile(const std::string& path, where w) {
+  check_unchanging(w, "readFile");
   detail::vvm_notes notes;
   at_caller(w, "readFile",
             [&] { read_mesh(*this, io::resolve(ctx_ ? ctx_->base_dir : std::string(), path), &notes, w); });

@@ -436,6 +436,7 @@ void write_vvm(const mesh<Tr>& m, const std::string& path) {
 
 template <class Tr>
 void mesh<Tr>::readXMLFile(const std::string& path, where w) {
+  check_unchanging(w, "readXMLFile");
   detail::vvm_notes notes;
   at_caller(w, "readXMLFile",
             [&] { read_vvm(*this, io::resolve(ctx_ ? ctx_->base_dir : std::string(), path), &notes, w); });

@@ -37,6 +37,7 @@
 // 5: one descriptor (vv_plugin_descriptor) instead of one symbol per entry.
 // 6: write_file and union_file (were write_vvm, union_vvm) write .vtp too,
 //    and take max_face.
+//    vv_plugin_settings::threads (parallel forall).
 #define VV_PLUGIN_ABI_VERSION 6
 //! The one symbol a model exports.
 #define VV_PLUGIN_DESCRIPTOR_SYMBOL "vv_plugin_descriptor"
@@ -50,6 +51,7 @@ struct vv_plugin_settings {
   std::uint64_t seed;      //!< seeds the model's random generator
   int strict_old_state;    //!< reading a never-synchronised old state is an error
   int check;               //!< track edits for vv_plugin::check
+  unsigned threads;        //!< threads of a parallel forall (0: the machine's cores)
 };
 
 //! A mesh's polygons, or a curve's polylines (vv/polylines.hpp), for
@@ -216,6 +218,8 @@ void configure(context<Tr>& ctx, const vv_plugin_settings& s, const char* source
   file_objects().set_base_dir(ctx.base_dir);
   ctx.seed(s.seed);
   ctx.strict_old_state = s.strict_old_state != 0;
+  ctx.strict_parallel = s.strict_old_state != 0;  // --strict: both checks
+  ctx.threads = s.threads;
   ctx.track_edits(s.check != 0);
   // Programs written for vv 1.1 draw from the C library's generators:
   // seed them too, so every run with the same seed is the same.

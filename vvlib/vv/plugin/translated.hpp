@@ -62,8 +62,8 @@ void merge_with(mesh<Tr>& m, const mesh<Tr>& n, where w = where::here()) {
 }
 //! `clear M;`
 template <class Tr>
-void clear(mesh<Tr>& m, where = where::here()) {
-  m.clear();
+void clear(mesh<Tr>& m, where w = where::here()) {
+  m.clear(w);
 }
 
 }  // namespace vv
