@@ -760,6 +760,22 @@ TEST(CompileOnly, DescriptorOfAnotherAbiIsRefused) {
   EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
 }
 
+// A model of ABI 5 (its descriptor held a C++ vv::proxy*) is refused before
+// any member past the version is read.
+TEST(CompileOnly, DescriptorOfAbi5IsRefusedNamingBothVersions) {
+  const std::string dir = fresh_dir("abi_5");
+  test_run::result r = load_built(dir,
+                                  "struct abi5 { int abi_version; void* entries[20]; };\n"
+                                  "extern \"C\" const abi5 vv_plugin_descriptor;\n"
+                                  "extern \"C\" const abi5 vv_plugin_descriptor = {5, {}};\n");
+  EXPECT_EQ(r.status, 1);
+  EXPECT_NE(r.err.find(dir + "other.so: error: the model was built for plugin ABI 5, this interpreter loads ABI 6; "
+                             "rebuild it"),
+            std::string::npos)
+      << r.err;
+  EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+}
+
 // Requirement 5: editing the .vvp (a scratch copy) rebuilds it (no cache
 // line) and changes the output: here every position doubles.
 TEST(CompileOnly, EditingTheModelRebuildsItAndChangesTheOutput) {

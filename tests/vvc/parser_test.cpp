@@ -141,7 +141,7 @@ TEST(Translation, ExecutionBlocksOnlyAtTopLevelBeforeBrace) {
   std::string out = squeeze(t.cpp);
   EXPECT_NE(out.find("intstep=0;"), std::string::npos);
   EXPECT_NE(out.find("staticvoidvv_block_step(){f();}"), std::string::npos);
-  EXPECT_NE(out.find("returnvv::plugin::guarded(vv_exchange,vv_block_step);"), std::string::npos);
+  EXPECT_NE(out.find("returnvv_model.run(vv_block_step);"), std::string::npos);
 }
 
 TEST(Translation, LineDirectivesFollowTheSource) {
