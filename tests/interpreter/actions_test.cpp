@@ -1,10 +1,14 @@
 // The host's actions and pick block, in-process (runner/session.hpp,
 // runner/model_runner.hpp): a real model (models/actions.vvp), built once
 // for the whole executable, run through model_runner as the viewer and
-// batch run it; a crash runs in a supervised child, as it does there.
+// batch run it; a crash runs in a supervised child, as it does there. Then
+// the example that has them (examples/cell_system.vvp): a picked corner's
+// cell divides, "Relax" settles the tissue under new parameters.
 #include <gtest/gtest.h>
 
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "runner/crash_report.hpp"
 #include "runner/model_runner.hpp"
@@ -13,10 +17,11 @@
 namespace {
 
 const std::string model_file = std::string(VV_TESTS_DIR) + "/models/actions.vvp";
+const std::string cell_system_file = std::string(VV_SOURCE_DIR) + "/examples/cell_system.vvp";
 
-vvi::options model_options() {
+vvi::options model_options(const std::string& file = model_file) {
   vvi::options o;
-  o.model = model_file;
+  o.model = file;
   o.cache = VV_TEST_CACHE;
   return o;
 }
@@ -132,6 +137,67 @@ TEST_F(Actions, ACrashInAnActionIsReportedWithItsLineAndTheAction) {
   vvi::remove_module_copies(end);
   EXPECT_EQ(report.line, model_file + ":34: crashed with SIGSEGV in action \"Crash\"");
   EXPECT_NE(report.stack.find(model_file + ":34 in an action's block"), std::string::npos) << report.stack;
+}
+
+class CellSystemExample : public testing::Test {
+ protected:
+  static void SetUpTestSuite() {
+    vvi::model_runner builder(model_options(cell_system_file));
+    vvi::build_result b = builder.build(false);
+    ASSERT_TRUE(b.ok) << b.error << "\n" << b.details;
+    plugin = b.plugin;
+  }
+
+  void SetUp() override {
+    ASSERT_FALSE(plugin.empty()) << "the model did not build";
+    ASSERT_TRUE(runner.load(plugin, 2)) << runner.error();  // 4 cells
+  }
+
+  //! The last value of a plot series, and the step it was recorded at.
+  std::pair<unsigned, double> last_of(const std::string& series) {
+    for (const vv_plot_series& p : runner.model()->plots())
+      if (series == p.name && p.count) return {p.steps[p.count - 1], p.values[p.count - 1]};
+    ADD_FAILURE() << "no series " << series;
+    return {0, 0};
+  }
+
+  std::size_t vertices() { return runner.model()->mesh("S")->vertex_count(); }
+
+  static std::string plugin;
+  vvi::model_runner runner{model_options(cell_system_file)};
+};
+
+std::string CellSystemExample::plugin;
+
+TEST_F(CellSystemExample, HasTheActionRelaxOnXAndAPickBlock) {
+  std::vector<const vv_action_entry*> actions = runner.model()->actions();
+  ASSERT_EQ(actions.size(), 1u);
+  EXPECT_STREQ(actions[0]->name, "Relax");
+  EXPECT_EQ(actions[0]->key, 'x');
+  EXPECT_NE(runner.model()->model().pick, nullptr);
+}
+
+// Vertex 1 is a corner of the first hexagon, on the tissue's outline: one
+// cell has it. Dividing a cell adds two wall vertices and one cell.
+TEST_F(CellSystemExample, PickingACornerDividesItsCell) {
+  EXPECT_EQ(last_of("cells"), std::make_pair(2u, 4.0));
+  const std::size_t before = vertices();
+  ASSERT_TRUE(runner.run_pick(1)) << runner.error();
+  EXPECT_EQ(last_of("cells"), std::make_pair(2u, 5.0));
+  EXPECT_EQ(vertices(), before + 2);
+  EXPECT_EQ(runner.model()->steps_done(), 2u);
+  // The daughters wait a generation: the next step divides the other 3 cells only.
+  ASSERT_TRUE(runner.step()) << runner.error();
+  EXPECT_EQ(last_of("cells"), std::make_pair(3u, 8.0));
+}
+
+TEST_F(CellSystemExample, RelaxSettlesTheTissueUnderANewPressure) {
+  const double settled = last_of("mean cell area").second;
+  ASSERT_EQ(runner.set_parameter("pressure", "2"), "");
+  ASSERT_TRUE(runner.run_action("Relax")) << runner.error();
+  EXPECT_GT(last_of("mean cell area").second, settled * 1.1);  // the walls stretched
+  EXPECT_EQ(last_of("cells"), std::make_pair(2u, 4.0));        // and no cell divided
+  EXPECT_EQ(runner.model()->steps_done(), 2u);
 }
 
 }  // namespace
