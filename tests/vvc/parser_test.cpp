@@ -172,7 +172,7 @@ TEST(Translation, GlobalMeshesAreListedForTheHost) {
   EXPECT_NE(t.cpp.find("{\"T\","), std::string::npos);
   EXPECT_NE(t.cpp.find("{\"U\","), std::string::npos);
   EXPECT_EQ(t.cpp.find("{\"f\","), std::string::npos);
-  EXPECT_NE(t.cpp.find("vv_mesh_table, 3,"), std::string::npos) << t.cpp;  // the descriptor's mesh count
+  EXPECT_NE(t.cpp.find("vv_d.mesh_count = 3;"), std::string::npos) << t.cpp;  // the descriptor's mesh count
 }
 
 TEST(Diagnostics, IndependentErrorsAreAllReported) {
