@@ -15,7 +15,7 @@
 
 #include <vv/vv.hpp>
 #include <vv/io/mesh_io.hpp>
-#include <vv/plugin/plugin.hpp>
+#include <model/abi.hpp>
 
 #include <util/point.hpp>
 
@@ -755,6 +755,22 @@ TEST(CompileOnly, DescriptorOfAnotherAbiIsRefused) {
   EXPECT_EQ(r.status, 1);
   EXPECT_NE(r.err.find(dir + "other.so: error: the model was built for plugin ABI " +
                        std::to_string(VV_PLUGIN_ABI_VERSION + 1) + ", " + this_abi),
+            std::string::npos)
+      << r.err;
+  EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+}
+
+// A model of ABI 5 (its descriptor held a C++ vv::proxy*) is refused before
+// any member past the version is read.
+TEST(CompileOnly, DescriptorOfAbi5IsRefusedNamingBothVersions) {
+  const std::string dir = fresh_dir("abi_5");
+  test_run::result r = load_built(dir,
+                                  "struct abi5 { int abi_version; void* entries[20]; };\n"
+                                  "extern \"C\" const abi5 vv_plugin_descriptor;\n"
+                                  "extern \"C\" const abi5 vv_plugin_descriptor = {5, {}};\n");
+  EXPECT_EQ(r.status, 1);
+  EXPECT_NE(r.err.find(dir + "other.so: error: the model was built for plugin ABI 5, this interpreter loads ABI 6; "
+                             "rebuild it"),
             std::string::npos)
       << r.err;
   EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;

@@ -6,7 +6,7 @@ execute_process(COMMAND ${CMAKE_COMMAND} --install ${BUILD} --prefix ${PREFIX}
 if(NOT status EQUAL 0)
   message(FATAL_ERROR "cmake --install failed:\n${err}")
 endif()
-foreach(f bin/vvinterpreter bin/vvc lib/libvv_formats.so include/vv-1/vv/plugin/model.hpp include/vv-1/util/point.hpp
+foreach(f bin/vvinterpreter bin/vvc lib/libvv_formats.so include/vv-1/model/model.hpp include/vv-1/util/point.hpp
           include/vv-1/algorithms/insert.hpp)
   if(NOT EXISTS ${PREFIX}/${f})
     message(FATAL_ERROR "not installed: ${f}")

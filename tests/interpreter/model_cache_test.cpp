@@ -167,7 +167,7 @@ TEST(ModelCache, TruncatedPrecompiledHeaderIsBuiltAgainWithANote) {
   test_run::result built = run_in(dir, cache, {"--batch", model});
   EXPECT_EQ(built.status, 0) << report(built);
   const std::string note = model + ": note: the cached precompiled vvlib header was damaged "
-                                   "(vv/plugin/model.hpp.gch has 1000000 bytes, ";
+                                   "(model/model.hpp.gch has 1000000 bytes, ";
   EXPECT_EQ(built.err.rfind(note, 0), 0u) << report(built);
   EXPECT_TRUE(contains(built.err, " expected); it was built again\n" + tiny_warning(model))) << report(built);
   EXPECT_TRUE(contains(built.out, "model ran: 42\n")) << report(built);
@@ -195,8 +195,8 @@ TEST(ModelCache, RebuildCompilesAgainAndRemovesOldLeftoversOfKilledBuilds) {
   const std::string dead_header = cache + "/pch/tmp-" + tag + "-dead";
   const std::string dead_plugin = cache + "/plugins/tmp-" + tag + "-dead";
   const std::string running = cache + "/plugins/tmp-" + tag + "-running";
-  for (const std::string& d : {dead_header + "/vv/plugin", dead_plugin, running}) fs::create_directories(d);
-  write(dead_header + "/vv/plugin/model.hpp.gch", std::string(1 << 20, 'x'));
+  for (const std::string& d : {dead_header + "/model", dead_plugin, running}) fs::create_directories(d);
+  write(dead_header + "/model/model.hpp.gch", std::string(1 << 20, 'x'));
   write(dead_plugin + "/model.so", std::string(1 << 16, 'x'));
   age(dead_header, 2 * 3600);
   age(dead_plugin, 2 * 3600);

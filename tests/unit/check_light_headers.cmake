@@ -3,7 +3,7 @@
 # file); the polygon formats come compiled, in vv_formats. The compiler's
 # -H lists every header the preprocessor opens.
 include(${CMAKE_CURRENT_LIST_DIR}/headers_opened.cmake)
-foreach(header vv/plugin/model.hpp vv/io/mesh_io.hpp vv/vv.hpp)
+foreach(header model/model.hpp vv/io/mesh_io.hpp vv/vv.hpp)
   headers_opened(${header} opened)
   string(REGEX MATCH "[^\n]*/CGAL/[^\n]*" cgal "${opened}")
   if(cgal)

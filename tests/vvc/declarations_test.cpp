@@ -46,7 +46,7 @@ TEST(DeclarationsPart, HoldsTheDeclarationsAndTheTraitsButNoCodeAfterThem) {
                                   "void grow() { forall v in S { v$h += rate; } }\n"
                                   "step { grow(); }\n");
   const std::string& d = t.declarations;
-  EXPECT_TRUE(has(d, "#include <vv/plugin/model.hpp>")) << d;
+  EXPECT_TRUE(has(d, "#include <model/model.hpp>")) << d;
   EXPECT_TRUE(has(d, "typedef double real;")) << d;
   EXPECT_TRUE(has(d, "struct vv_vertex_props { real h{};")) << d;
   EXPECT_TRUE(has(d, "struct vv_traits : vv::traits<vv_vertex_props, vv_edge_props, vv_mesh_props>")) << d;
@@ -59,8 +59,8 @@ TEST(DeclarationsPart, HoldsTheDeclarationsAndTheTraitsButNoCodeAfterThem) {
   EXPECT_FALSE(has(d, "vv_model")) << d;
   // What it compiles for the model's traits.
   EXPECT_TRUE(has(d, "\ntemplate class vv::context<vv_traits>;\ntemplate class vv::mesh<vv_traits>;\n")) << d;
-  EXPECT_TRUE(has(d, "const char* vv_decl_check(vv::plugin::exchange& vv_x, "
-                     "const vv::plugin::named_mesh<vv_traits> (&vv_all)[1]) noexcept {"))
+  EXPECT_TRUE(has(d, "const char* vv_decl_check(vv::model::program<vv_traits>& vv_p, "
+                     "const vv::model::named_mesh<vv_traits> (&vv_all)[1]) noexcept {"))
       << d;
 }
 
@@ -115,7 +115,7 @@ TEST(DeclarationsPart, TheProgramUsesItOnlyWhenToldItIsApart) {
                          "extern template class vv::context<vv_traits>;\n"
                          "extern template class vv::mesh<vv_traits>;\n"))
       << t.cpp;
-  EXPECT_TRUE(has(t.cpp, "return vv_decl_write_file(vv_exchange, S, vv_path, vv_max_face);")) << t.cpp;
+  EXPECT_TRUE(has(t.cpp, "return vv_decl_write_file(vv_model, S, vv_path, vv_max_face);")) << t.cpp;
 }
 
 TEST(DeclarationsPart, AProgramWithoutPropertyBlocksHasTheTraitsAlone) {

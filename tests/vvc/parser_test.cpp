@@ -141,7 +141,7 @@ TEST(Translation, ExecutionBlocksOnlyAtTopLevelBeforeBrace) {
   std::string out = squeeze(t.cpp);
   EXPECT_NE(out.find("intstep=0;"), std::string::npos);
   EXPECT_NE(out.find("staticvoidvv_block_step(){f();}"), std::string::npos);
-  EXPECT_NE(out.find("returnvv::plugin::guarded(vv_exchange,vv_block_step);"), std::string::npos);
+  EXPECT_NE(out.find("returnvv_model.run(vv_block_step);"), std::string::npos);
 }
 
 TEST(Translation, LineDirectivesFollowTheSource) {
@@ -172,7 +172,7 @@ TEST(Translation, GlobalMeshesAreListedForTheHost) {
   EXPECT_NE(t.cpp.find("{\"T\","), std::string::npos);
   EXPECT_NE(t.cpp.find("{\"U\","), std::string::npos);
   EXPECT_EQ(t.cpp.find("{\"f\","), std::string::npos);
-  EXPECT_NE(t.cpp.find("vv_mesh_table, 3,"), std::string::npos) << t.cpp;  // the descriptor's mesh count
+  EXPECT_NE(t.cpp.find("vv_d.mesh_count = 3;"), std::string::npos) << t.cpp;  // the descriptor's mesh count
 }
 
 TEST(Diagnostics, IndependentErrorsAreAllReported) {

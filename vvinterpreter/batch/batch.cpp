@@ -132,7 +132,7 @@ int run_model_headless(const options& o) {
     std::printf("%s", text.c_str());
   }
   if (!o.plots_path.empty()) {
-    std::string e = write_plots(o.plots_path, model.proxy());
+    std::string e = write_plots(o.plots_path, model.plots());
     if (!e.empty()) return fail(e);
     if (!o.quiet) std::printf("wrote %s\n", o.plots_path.c_str());
   }

@@ -90,7 +90,7 @@ std::string vvlib_include_dir() {
   fs::path bin = executable_dir();
   fs::path installed = bin.parent_path() / "include" / "vv-1";
   std::error_code ec;
-  if (bin.filename() == "bin" && fs::exists(installed / "vv" / "plugin" / "model.hpp", ec)) return installed.string();
+  if (bin.filename() == "bin" && fs::exists(installed / "model" / "model.hpp", ec)) return installed.string();
   return config::build_tree_include;
 }
 

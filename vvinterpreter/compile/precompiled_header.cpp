@@ -12,7 +12,7 @@ namespace fs = std::filesystem;
 
 namespace {
 
-const char* const header_file = "vv/plugin/model.hpp.gch";
+const char* const header_file = "model/model.hpp.gch";
 
 }  // namespace
 
@@ -38,14 +38,14 @@ std::string precompiled_header_dir(const header_request& r, std::string& damage,
   }
 
   std::string work = folder + "/tmp-" + r.key + "-" + cache::unique_id();
-  fs::create_directories(work + "/vv/plugin", ec);
+  fs::create_directories(work + "/model", ec);
   std::vector<std::string> argv = {config::cxx_compiler};
   argv.insert(argv.end(), r.flags.begin(), r.flags.end());
-  argv.insert(argv.end(), {"-x", "c++-header", r.include + "/vv/plugin/model.hpp", "-o", work + "/" + header_file});
+  argv.insert(argv.end(), {"-x", "c++-header", r.include + "/model/model.hpp", "-o", work + "/" + header_file});
   process_result made = run_process(argv);
   if (made.status != 0 || !cache::write_manifest(work, {{header_file, cache::check::size}})) {
     fs::remove_all(work, ec);
-    error = "cannot precompile vv/plugin/model.hpp:\n" + made.output;
+    error = "cannot precompile model/model.hpp:\n" + made.output;
     return "";
   }
   std::string build = r.key + "." + cache::unique_id();

@@ -1,4 +1,4 @@
-// The precompiled vv/plugin/model.hpp every model includes first: built
+// The precompiled model/model.hpp every model includes first: built
 // once per cache and set of compiler flags (a few seconds), in the cache's
 // pch/ folder (model_cache.hpp), and checked before each use.
 #pragma once
@@ -16,7 +16,7 @@ struct header_request {
 };
 
 //! The folder to put first on the include path (it holds
-//! vv/plugin/model.hpp.gch), built when the cache has no sound one. ""
+//! model/model.hpp.gch), built when the cache has no sound one. ""
 //! when it cannot be built (`error` says why; models then compile without
 //! it). `damage` says why a cached one was found broken and rebuilt, or "".
 std::string precompiled_header_dir(const header_request& request, std::string& damage, std::string& error);

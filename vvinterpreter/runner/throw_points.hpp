@@ -4,7 +4,7 @@
 // the stack where it was thrown is gone by then. The host takes every
 // throw on its way (it defines __cxa_throw, which the model's and the C++
 // library's throws call) and keeps the stack of the last one while a
-// block runs; the plugin's catch (vv::plugin::guarded) asks for it through
+// block runs; the plugin's catch (vv::model::guarded, model/guarded.hpp) asks for it through
 // vv_host_throw_frames, and the session names the innermost .vvp line.
 #pragma once
 

@@ -16,6 +16,8 @@
 #include <memory>
 #include <string>
 
+#include <model/viewer_keys.hpp>
+
 #include "app/files.hpp"
 #include "render/image.hpp"
 #include "render/scene.hpp"
@@ -219,7 +221,7 @@ class viewer {
     job_ = [this] {
       if (runner_.error().empty()) {
         refresh_drawing();
-        if (runner_.model()->proxy().record_frame) record_frame_ = true;
+        if (runner_.model()->run_settings().record_frame) record_frame_ = true;
       } else {
         show_error(runner_.error(), runner_.error());
         animating_ = false;
@@ -288,7 +290,7 @@ class viewer {
     } else if (run_left_ > 0) {
       --run_left_;
       submit_step();
-    } else if (animating_ && t - last_animated_ >= runner_.model()->proxy().delay_msec / 1000.0) {
+    } else if (animating_ && t - last_animated_ >= runner_.model()->run_settings().delay_msec / 1000.0) {
       last_animated_ = t;
       submit_step();
     }
@@ -341,12 +343,12 @@ class viewer {
     for (const vv_param_entry* p : parameters_of(*runner_.model()))
       parameters_.push_back({p->name, p->type, parameter_text(*p), parameter_number(*p), p->has_range != 0, p->lo,
                              p->hi, p->line});
-    for (const vv::plot_series& series : runner_.model()->proxy().plots) {
+    for (const vv_plot_series& series : runner_.model()->plots()) {
       plot_view v;
       v.name = series.name;
-      v.values.assign(series.values.begin(), series.values.end());
-      if (!series.steps.empty()) v.first_step = series.steps.front(), v.last_step = series.steps.back();
-      if (!series.values.empty()) v.last = series.values.back();
+      v.values.assign(series.values, series.values + series.count);
+      if (series.count) v.first_step = series.steps[0], v.last_step = series.steps[series.count - 1];
+      if (series.count) v.last = series.values[series.count - 1];
       plots_.push_back(std::move(v));
     }
     std::vector<std::string> files = runner_.file_objects();
@@ -420,7 +422,7 @@ class viewer {
 
   void write_plots_to(const std::string& path) {
     if (!runner_.model()) return show_error("plots " + path + ": no model is loaded", "plots: no model is loaded");
-    std::string e = write_plots(path, runner_.model()->proxy());
+    std::string e = write_plots(path, runner_.model()->plots());
     if (e.empty()) say("wrote " + path);
     else show_error(e, e);
   }
@@ -516,8 +518,8 @@ class viewer {
 
   void act(const panel_actions& a) {
     if (a.step) run_left_ += 1;
-    if (a.run && runner_.model() && !busy()) run_left_ += runner_.model()->proxy().steps;
-    if (a.animate && runner_.model() && !busy() && !runner_.model()->proxy().no_animate) animating_ = true;
+    if (a.run && runner_.model() && !busy()) run_left_ += runner_.model()->run_settings().steps;
+    if (a.animate && runner_.model() && !busy() && !runner_.model()->run_settings().no_animate) animating_ = true;
     if (a.stop) stop();
     if (a.rewind) rewind_requested_ = true;
     if (a.end) end_requested_ = true;
@@ -598,8 +600,8 @@ class viewer {
     if (runner_.model() && !busy()) {
       s.steps = runner_.model()->steps_done();
       s.last_step_ms = runner_.model()->last_step_ms();
-      s.run_steps = runner_.model()->proxy().steps;
-      s.can_animate = !runner_.model()->proxy().no_animate;
+      s.run_steps = runner_.model()->run_settings().steps;
+      s.can_animate = !runner_.model()->run_settings().no_animate;
       for (const vv_mesh_entry* m : runner_.model()->meshes()) s.meshes.emplace_back(m->name, m->vertex_count());
     }
     s.animating = animating_;
@@ -677,14 +679,23 @@ class viewer {
   void on_key(int key, int action, int mods) {
     if (ImGui::GetIO().WantCaptureKeyboard || (action != GLFW_PRESS && action != GLFW_REPEAT)) return;
     panel_actions a;
+    // Letters and digits: the list vvc checks actions' keys against.
+    const char c = key >= GLFW_KEY_A && key <= GLFW_KEY_Z   ? static_cast<char>('a' + (key - GLFW_KEY_A))
+                   : key >= GLFW_KEY_0 && key <= GLFW_KEY_9 ? static_cast<char>('0' + (key - GLFW_KEY_0))
+                                                            : '\0';
+    if (const vv::model::viewer_key* k = c ? vv::model::find_viewer_key(c) : nullptr) {
+      switch (k->command) {
+        case vv::model::viewer_command::run: a.run = true; break;
+        case vv::model::viewer_command::animate_or_stop: (animating_ ? a.stop : a.animate) = true; break;
+        case vv::model::viewer_command::rewind: a.rewind = true; break;
+        case vv::model::viewer_command::end: a.end = true; break;
+        case vv::model::viewer_command::fit: a.fit = true; break;
+        case vv::model::viewer_command::screenshot: a.screenshot = true; break;
+      }
+      return act(a);
+    }
     switch (key) {
       case GLFW_KEY_SPACE: a.step = true; break;
-      case GLFW_KEY_R: a.run = true; break;
-      case GLFW_KEY_A: (animating_ ? a.stop : a.animate) = true; break;
-      case GLFW_KEY_W: a.rewind = true; break;
-      case GLFW_KEY_E: a.end = true; break;
-      case GLFW_KEY_F: a.fit = true; break;
-      case GLFW_KEY_S: a.screenshot = true; break;
       case GLFW_KEY_HOME: cam_.reset(); break;
       case GLFW_KEY_LEFT: cam_.rotate_degrees(-5, 0); break;
       case GLFW_KEY_RIGHT: cam_.rotate_degrees(5, 0); break;
@@ -737,7 +748,7 @@ class viewer {
       ++script_pos_;
       switch (c.kind) {
         case script_command::step: run_left_ += static_cast<unsigned>(c.count); return;
-        case script_command::run: if (runner_.model()) run_left_ += runner_.model()->proxy().steps; return;
+        case script_command::run: if (runner_.model()) run_left_ += runner_.model()->run_settings().steps; return;
         case script_command::rewind: rewind_requested_ = true; return;
         case script_command::end: end_requested_ = true; return;
         case script_command::reread: reread_requested_ = true; return;

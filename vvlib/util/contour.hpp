@@ -18,7 +18,7 @@
 #include <utility>
 #include <vector>
 
-#include <vv/file_objects.hpp>
+#include <model/registered_file.hpp>
 
 #include "bspline.hpp"
 #include "contour_file.hpp"
@@ -26,7 +26,16 @@
 
 namespace util {
 
-class Contour : public vv::registered_file<vv::file_kind::contours> {
+namespace contour_detail {
+//! A contour's contents: the file and the spline's polygon.
+struct curve {
+  vlab::contour_file file;
+  std::vector<Point<double>> polygon;  //!< the spline's polygon (closed: extended)
+  Point<double> min, max;
+};
+}  // namespace contour_detail
+
+class Contour : public vv::model::registered_file<Contour, vv::file_kind::contours, contour_detail::curve> {
  public:
   using ControlPoint = bspline::control_point;
 
@@ -34,40 +43,34 @@ class Contour : public vv::registered_file<vv::file_kind::contours> {
   Contour() = default;
 
   //! Reads `path`; throws vv::error "file:line: problem" if it cannot.
-  explicit Contour(std::string path) : registered_file(std::move(path)) { reread(); }
+  //! reread() reads it again; on an error the contour keeps its values.
+  explicit Contour(const std::string& path) : registered_file(path) {}
 
-  // Copies register too; a move is a copy (see registered_file).
-  Contour(const Contour&) = default;
-  Contour& operator=(const Contour&) = default;
-
-  //! Reads the file again. On an error the contour keeps its values and the
-  //! error (vv::error, with the file and line) is thrown.
-  void reread() override {
-    if (path().empty()) return;
-    adopt(vlab::read_contour_file(path()));
-  }
+  //! The file's contour (model/registered_file.hpp calls it).
+  static contour_detail::curve read(const std::string& path) { return made(vlab::read_contour_file(path)); }
 
   Point<double> operator()(double t) const {
-    if (polygon_.empty()) return Point<double>();
-    if (file_.endpoint_interpolating) return bspline::clamped(polygon_, std::clamp(t, 0.0, 1.0) * bspline::clamped_end(polygon_));
-    return bspline::uniform(polygon_, t);
+    const std::vector<Point<double>>& polygon = contents().polygon;
+    if (polygon.empty()) return Point<double>();
+    if (contents().file.endpoint_interpolating) return bspline::clamped(polygon, std::clamp(t, 0.0, 1.0) * bspline::clamped_end(polygon));
+    return bspline::uniform(polygon, t);
   }
 
   //! The corners of the box around the control points; the curve lies
   //! inside it (vv 1.1's meaning, with z as well).
-  const Point<double>& getMin() const { return min_; }
-  const Point<double>& getMax() const { return max_; }
+  const Point<double>& getMin() const { return contents().min; }
+  const Point<double>& getMax() const { return contents().max; }
 
-  const std::vector<ControlPoint>& points() const { return file_.points; }
-  bool closed() const { return file_.closed; }
-  bool endpointInterpolating() const { return file_.endpoint_interpolating; }
-  const std::string& name() const { return file_.name; }
-  unsigned samples() const { return file_.samples; }
-  vlab::contour_file::format version() const { return file_.version; }
+  const std::vector<ControlPoint>& points() const { return contents().file.points; }
+  bool closed() const { return contents().file.closed; }
+  bool endpointInterpolating() const { return contents().file.endpoint_interpolating; }
+  const std::string& name() const { return contents().file.name; }
+  unsigned samples() const { return contents().file.samples; }
+  vlab::contour_file::format version() const { return contents().file.version; }
 
  private:
-  // Takes a complete, checked file.
-  void adopt(vlab::contour_file c) {
+  // The polygon of a complete, checked file.
+  static contour_detail::curve made(vlab::contour_file c) {
     std::vector<Point<double>> polygon = bspline::expand(c.points);
     Point<double> lo = polygon.front(), hi = polygon.front();
     for (const Point<double>& p : polygon)
@@ -79,14 +82,12 @@ class Contour : public vv::registered_file<vv::file_kind::contours> {
       // The first three again: the last segments join the first smoothly.
       for (std::size_t i = 0; i < 3; ++i) polygon.push_back(polygon[i]);
     }
-    file_ = std::move(c);
-    polygon_ = std::move(polygon);
-    min_ = lo, max_ = hi;
+    contour_detail::curve out;
+    out.file = std::move(c);
+    out.polygon = std::move(polygon);
+    out.min = lo, out.max = hi;
+    return out;
   }
-
-  vlab::contour_file file_;
-  std::vector<Point<double>> polygon_;  //!< the spline's polygon (closed: extended)
-  Point<double> min_, max_;
 };
 
 }  // namespace util

@@ -35,65 +35,69 @@
 #include <utility>
 
 #include <vv/error.hpp>
-#include <vv/file_objects.hpp>
+#include <model/registered_file.hpp>
 
 #include "vlab_file.hpp"
 
 namespace util {
 
-class Materials : public vv::registered_file<vv::file_kind::materials> {
+namespace materials_detail {
+//! vv 1.1's layout: RGBA arrays in [0, 1] that go straight to
+//! glMaterialfv (`m.diffuse`, `m.diffuse[0]`).
+struct Material {
+  GLfloat ambient[4] = {0.2f, 0.2f, 0.2f, 1.0f};
+  GLfloat diffuse[4] = {0.8f, 0.8f, 0.8f, 1.0f};
+  GLfloat emission[4] = {0.0f, 0.0f, 0.0f, 1.0f};
+  GLfloat specular[4] = {0.0f, 0.0f, 0.0f, 1.0f};
+  GLfloat shiny = 0.0f;         //!< shininess, 0-128
+  GLfloat transparency = 0.0f;  //!< 0 opaque, 1 transparent
+};
+//! The 256 materials; without a file every one is OpenGL's default.
+struct table {
+  std::array<Material, 256> at{};
+};
+}  // namespace materials_detail
+
+class Materials : public vv::model::registered_file<Materials, vv::file_kind::materials, materials_detail::table> {
  public:
-  //! vv 1.1's layout: RGBA arrays in [0, 1] that go straight to
-  //! glMaterialfv (`m.diffuse`, `m.diffuse[0]`).
-  struct Material {
-    GLfloat ambient[4] = {0.2f, 0.2f, 0.2f, 1.0f};
-    GLfloat diffuse[4] = {0.8f, 0.8f, 0.8f, 1.0f};
-    GLfloat emission[4] = {0.0f, 0.0f, 0.0f, 1.0f};
-    GLfloat specular[4] = {0.0f, 0.0f, 0.0f, 1.0f};
-    GLfloat shiny = 0.0f;         //!< shininess, 0-128
-    GLfloat transparency = 0.0f;  //!< 0 opaque, 1 transparent
-  };
+  using Material = materials_detail::Material;
   static constexpr unsigned entries = 256;
   static constexpr std::size_t record_size = 15;
 
   //! No file: every material OpenGL's default; reread() does nothing.
   Materials() = default;
 
-  //! Reads `path`; throws vv::error "file: problem" if it cannot.
-  explicit Materials(std::string path) : registered_file(std::move(path)) { reread(); }
+  //! Reads `path`; throws vv::error "file: problem" if it cannot. reread()
+  //! reads it again; on an error the materials stay as they were.
+  explicit Materials(const std::string& path) : registered_file(path) {}
 
-  // Copies register too; a move is a copy (see registered_file).
-  Materials(const Materials&) = default;
-  Materials& operator=(const Materials&) = default;
-
-  //! Reads the file again; on an error the materials stay as they were.
-  void reread() override {
-    if (path().empty()) return;
-    const std::string bytes = vlab::read_bytes(path());
+  //! The file's materials (model/registered_file.hpp calls it).
+  static materials_detail::table read(const std::string& path) {
+    const std::string bytes = vlab::read_bytes(path);
     if (bytes.size() % record_size != 0) {
       const std::size_t record = bytes.size() / record_size;
-      throw vv::error(path(), 0, "the file ends inside record " + std::to_string(record) + " (byte offset " +
+      throw vv::error(path, 0, "the file ends inside record " + std::to_string(record) + " (byte offset " +
                                      std::to_string(record * record_size) + "): it has " +
                                      std::to_string(bytes.size() % record_size) + " of its 15 bytes");
     }
-    std::array<Material, entries> materials{};
+    materials_detail::table materials;
     std::array<int, entries> given_by;  // the record that set each index, or -1
     given_by.fill(-1);
     for (std::size_t record = 0; record * record_size < bytes.size(); ++record) {
       const char* r = bytes.data() + record * record_size;
       const unsigned index = byte(r[0]);
       if (given_by[index] >= 0)
-        throw vv::error(path(), 0, "record " + std::to_string(record) + " (byte offset " +
+        throw vv::error(path, 0, "record " + std::to_string(record) + " (byte offset " +
                                        std::to_string(record * record_size) + ") gives material " +
                                        std::to_string(index) + " again, after record " +
                                        std::to_string(given_by[index]));
       given_by[index] = static_cast<int>(record);
-      materials[index] = decode(r);
+      materials.at[index] = decode(r);
     }
-    materials_ = materials;
+    return materials;
   }
 
-  const Material& getMaterial(unsigned index) const { return materials_[std::min(index, entries - 1)]; }
+  const Material& getMaterial(unsigned index) const { return contents().at[std::min(index, entries - 1)]; }
 
   //! t of material i and 1 - t of material j, every value (vv 1.1's
   //! weighting; t is clamped to [0, 1]).
@@ -144,7 +148,6 @@ class Materials : public vv::registered_file<vv::file_kind::materials> {
     return m;
   }
 
-  std::array<Material, entries> materials_{};
 };
 
 }  // namespace util

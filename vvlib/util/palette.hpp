@@ -20,46 +20,51 @@
 #include <utility>
 
 #include <vv/error.hpp>
-#include <vv/file_objects.hpp>
+#include <model/registered_file.hpp>
 
 #include "colour.hpp"
 #include "vlab_file.hpp"
 
 namespace util {
 
-class Palette : public vv::registered_file<vv::file_kind::palettes> {
+namespace palette_detail {
+//! vv 1.1's colour type: bytes 0-255 (alpha 255).
+typedef Colour<GLubyte> PaletteColour;
+//! A palette's contents; without a file every colour is black.
+struct colours {
+  std::array<PaletteColour, 256> at;
+  colours() { at.fill(PaletteColour(0, 0, 0, 255)); }
+};
+}  // namespace palette_detail
+
+class Palette : public vv::model::registered_file<Palette, vv::file_kind::palettes, palette_detail::colours> {
  public:
-  //! vv 1.1's colour type: bytes 0-255 (alpha 255).
-  typedef Colour<GLubyte> PaletteColour;
+  typedef palette_detail::PaletteColour PaletteColour;
   static constexpr unsigned entries = 256;
   static constexpr std::size_t file_size = 3 * entries;
 
   //! No file: every colour black; reread() does nothing.
-  Palette() { colours_.fill(PaletteColour(0, 0, 0, 255)); }
+  Palette() = default;
 
-  //! Reads `path`; throws vv::error "file: problem" if it cannot.
-  explicit Palette(std::string path) : registered_file(std::move(path)) { reread(); }
+  //! Reads `path`; throws vv::error "file: problem" if it cannot. reread()
+  //! reads it again; on an error the colours stay as they were.
+  explicit Palette(const std::string& path) : registered_file(path) {}
 
-  // Copies register too; a move is a copy (see registered_file).
-  Palette(const Palette&) = default;
-  Palette& operator=(const Palette&) = default;
-
-  //! Reads the file again; on an error the colours stay as they were.
-  void reread() override {
-    if (path().empty()) return;
-    const std::string bytes = vlab::read_bytes(path());
+  //! The file's colours (model/registered_file.hpp calls it).
+  static palette_detail::colours read(const std::string& path) {
+    const std::string bytes = vlab::read_bytes(path);
     if (bytes.size() != file_size)
-      throw vv::error(path(), 0, "the file has " + std::to_string(bytes.size()) + " bytes (" +
-                                     std::to_string(bytes.size() / 3) + " complete entries): a colour map has "
-                                     "256 entries of 3 bytes (red, green, blue), 768 bytes");
-    std::array<PaletteColour, entries> colours;
+      throw vv::error(path, 0, "the file has " + std::to_string(bytes.size()) + " bytes (" +
+                                   std::to_string(bytes.size() / 3) + " complete entries): a colour map has "
+                                   "256 entries of 3 bytes (red, green, blue), 768 bytes");
+    palette_detail::colours c;
     for (std::size_t i = 0; i < entries; ++i)
-      colours[i] = PaletteColour(byte(bytes[3 * i]), byte(bytes[3 * i + 1]), byte(bytes[3 * i + 2]), 255);
-    colours_ = colours;
+      c.at[i] = PaletteColour(byte(bytes[3 * i]), byte(bytes[3 * i + 1]), byte(bytes[3 * i + 2]), 255);
+    return c;
   }
 
   //! The colour as the file holds it, bytes 0-255 (vv 1.1).
-  const PaletteColour& getColour(unsigned index) const { return colours_[std::min(index, entries - 1)]; }
+  const PaletteColour& getColour(unsigned index) const { return contents().at[std::min(index, entries - 1)]; }
 
   //! The colour with channels in [0, 1], as glColor4fv takes it.
   Colour<float> colour(unsigned index, double alpha = 1) const {
@@ -83,7 +88,6 @@ class Palette : public vv::registered_file<vv::file_kind::palettes> {
  private:
   static GLubyte byte(char c) { return static_cast<GLubyte>(static_cast<unsigned char>(c)); }
 
-  std::array<PaletteColour, entries> colours_;
 };
 
 }  // namespace util

@@ -26,7 +26,7 @@
 namespace util::vlab {
 
 //! The whole file (the file objects resolve relative names first:
-//! vv/file_objects.hpp). A path that is no regular file (a folder, a FIFO,
+//! model/file_registry.hpp). A path that is no regular file (a folder, a FIFO,
 //! a link to a device), or a file over vv::io::data_file_limit, is refused
 //! unread.
 inline std::string read_bytes(const std::string& path) {

@@ -1,5 +1,6 @@
 // The per-model state: pooled vertex storage, labels, the garbage
-// collector, the random generator and the host proxy.
+// collector and the random generator. (The host's proxy is the model
+// layer's: model/program.hpp.)
 //
 // Storage. Vertices live in fixed-size chunks that never move, so a
 // reference to a property stays valid while other vertices are created.
@@ -52,7 +53,6 @@
 #include "detail/thread_counts.hpp"
 #include "error.hpp"
 #include "traits.hpp"
-#include "plugin/proxy.hpp"
 
 namespace vv {
 
@@ -110,8 +110,6 @@ class context {
     return rng_;
   }
   void seed(std::uint64_t s) { rng_.seed(s); }
-
-  proxy& host() noexcept { return proxy_; }
 
   //! Folder that relative file paths of the program resolve against.
   std::string base_dir;
@@ -330,7 +328,6 @@ class context {
   std::size_t gc_threshold_ = min_gc_threshold;
   unsigned gc_pauses_ = 0;
   std::mt19937_64 rng_{5489u};
-  proxy proxy_;
   std::set<std::string> warned_;  // keys of the warnings said
   std::mutex warned_mutex_;
   bool tracking_edits_ = false;

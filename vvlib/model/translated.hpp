@@ -9,8 +9,8 @@
 
 #include <utility>
 
-#include "../edges.hpp"
-#include "../mesh.hpp"
+#include <vv/edges.hpp>
+#include <vv/mesh.hpp>
 
 namespace vv {
 

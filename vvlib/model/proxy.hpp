@@ -1,29 +1,15 @@
-// The program's view of its host (LANGUAGE.md section 8): run settings the
-// program writes and the host reads.
+// The program's view of its host (`proxy`, docs/language.md section 5): run
+// settings the program writes and the host reads (through the descriptor's
+// run_settings, plot_count and plot_series: model/abi.hpp), file objects to
+// reread, and the plots.
 #pragma once
 
 #include <string>
 #include <vector>
 
+#include "file_object.hpp"
+
 namespace vv {
-
-//! An object whose contents come from a file (a colour palette, a material
-//! list, a function graph): the host's "reread files" command calls
-//! reread() on every one the program put into the proxy's lists and on
-//! every one registered in file_objects.hpp.
-class file_object {
- public:
-  virtual ~file_object() = default;
-  virtual void reread() = 0;
-  //! The file, for a host that watches it ("" when there is none).
-  virtual const std::string& path() const {
-    static const std::string none;
-    return none;
-  }
-};
-
-// Defined in file_objects.hpp, included at the end.
-inline void reread_file_objects(std::initializer_list<const std::vector<file_object*>*> proxy_lists);
 
 //! A quantity a program records over steps (proxy.plot): values[i] was
 //! recorded at steps[i].
@@ -48,7 +34,8 @@ struct proxy {
   double view_min[3] = {0, 0, 0};
   double view_max[3] = {0, 0, 0};
 
-  //! File-backed objects, by kind, re-read on the host's command.
+  //! File-backed objects, by kind, re-read on the host's command together
+  //! with the registered ones (model/file_registry.hpp).
   std::vector<file_object*> materials, palettes, functions, contours;
 
   //! Series recorded by plot(), in the order first recorded.
@@ -71,9 +58,6 @@ struct proxy {
     s->values.push_back(value);
   }
 
-  //! Rereads the objects in these lists and the registered ones, each once.
-  void reread_files() { reread_file_objects({&materials, &palettes, &functions, &contours}); }
-
   void setViewVolume(double maxx, double maxy, double maxz, double minx, double miny,
                      double minz) noexcept {
     has_view_volume = true;
@@ -83,5 +67,3 @@ struct proxy {
 };
 
 }  // namespace vv
-
-#include "../file_objects.hpp"
