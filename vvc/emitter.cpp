@@ -141,7 +141,13 @@ class emitter {
     bool any = false;
     for (const field& f : b.fields) any = any || f.in_files;
     if (!any) s += "    (void)vv_visit;\n";
-    return s + "  }";
+    s += "  }";
+    // The fields the program computes: files need not give them (vv/fields.hpp).
+    std::string computed;
+    for (const field& f : b.fields)
+      if (f.computed) computed += (computed.empty() ? "\"" : ", \"") + std::string(f.name->text) + "\"";
+    if (!computed.empty()) s += "\n  static constexpr const char* vv_computed_fields[] = {" + computed + "};";
+    return s;
   }
 
   // The traits, the model's context and the helpers the program calls.

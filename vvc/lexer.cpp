@@ -6,7 +6,9 @@
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
+#include <optional>
 #include <string>
+#include <system_error>
 
 #include <vv/io/files.hpp>
 
@@ -160,6 +162,8 @@ class lexer {
     if (vvp_include(t.text, included)) {
       include(t, included);
       t.text = std::string_view();  // nothing of the directive itself remains
+    } else if (std::string header; header_include(t.text, header)) {
+      check_header(t, header);
     } else if (is_pragma_once(t.text)) {
       // Included .vvp files are pasted into one translation unit, where the
       // pragma would mean nothing: the lexer keeps the promise instead.
@@ -189,6 +193,35 @@ class lexer {
     if (close == std::string_view::npos) return false;
     path = std::string(line.substr(i + 1, close - i - 1));
     return path.size() > 4 && path.compare(path.size() - 4, 4, ".vvp") == 0;
+  }
+
+  // `#include "x.h"` or `#include <x.h>` (not a .vvp: those are read here).
+  static bool header_include(std::string_view line, std::string& path) {
+    std::size_t i = 1;
+    while (i < line.size() && (line[i] == ' ' || line[i] == '\t')) ++i;
+    if (line.substr(i, 7) != "include") return false;
+    i += 7;
+    while (i < line.size() && (line[i] == ' ' || line[i] == '\t')) ++i;
+    if (i >= line.size() || (line[i] != '"' && line[i] != '<')) return false;
+    std::size_t close = line.find(line[i] == '"' ? '"' : '>', i + 1);
+    if (close == std::string_view::npos) return false;
+    path = std::string(line.substr(i, close - i + 1));  // with its quotes or brackets
+    return true;
+  }
+
+  // A header the compiler would read that is no regular file, or is too
+  // large, is refused here: g++ would read `#include "/dev/zero"` without
+  // end. Relative quoted names are looked for beside the including file;
+  // what is not found there is left to the compiler's own search.
+  void check_header(const token& at, const std::string& spelled) {
+    std::string name = spelled.substr(1, spelled.size() - 2);
+    bool quoted = spelled[0] == '"';
+    if (name.empty() || (name[0] != '/' && !quoted)) return;
+    std::string path = vv::io::resolve(f_.folder(), name);
+    std::error_code ec;
+    if (!std::filesystem::exists(path, ec)) return;
+    if (std::optional<std::string> why = vv::io::unreadable_file(path, vv::io::program_file_limit))
+      diag_.error(at, "cannot include " + spelled + ": " + *why);
   }
 
   // The one name of a file, however a path spells it ("./a.vvp", "x/../a.vvp",

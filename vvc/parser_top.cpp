@@ -223,6 +223,19 @@ std::vector<declarator_range> split_declarators(const pieces& m, std::size_t s, 
   return declarators;
 }
 
+// `computed` before a data member's type says that the program computes the
+// field itself, so a file need not give it (no warning when it does not).
+// It is a word of ours only there, and only before a type and a name: in
+// `computed c;`, `computed c = x;`, `computed* p;` or `computed<T> t;` it
+// names a type, and a variable may still be called `computed`.
+bool is_computed_qualifier(const pieces& m, std::size_t s, std::size_t e) {
+  if (s + 2 >= e || m[s].kind != piece_kind::token || !m[s].tok->is_word("computed")) return false;
+  const piece& type = m[s + 1];
+  if (type.kind != piece_kind::token || !type.tok->is_identifier()) return false;
+  const piece& after = m[s + 2];
+  return !(is_token(after, "=") || is_token(after, ",") || is_token(after, ":") || after.kind == piece_kind::group);
+}
+
 // A declarator without an initialiser or a bit-field width gets `{}` after
 // its last piece (after any array bounds from `stop` on).
 void value_initialise_unless_initialised(property_block& b, std::size_t stop, std::size_t de) {
@@ -240,9 +253,11 @@ void value_initialise_unless_initialised(property_block& b, std::size_t stop, st
 
 // A data member of a property block: a declaration that is no function,
 // type, alias or static. Its declarators name the fields; those without an
-// initialiser get `{}` so every property starts value-initialised.
+// initialiser get `{}` so every property starts value-initialised. A
+// leading `computed` marks its fields computed and is not emitted.
 void parser::analyse_fields(property_block& b) {
   const pieces& m = b.members;
+  std::vector<std::size_t> qualifiers;  // the `computed` pieces, dropped at the end
   std::size_t begin = 0;
   for (std::size_t i = 0; i <= m.size(); ++i) {
     bool ends = i == m.size() || is_token(m[i], ";") || m[i].kind == piece_kind::body;
@@ -254,11 +269,19 @@ void parser::analyse_fields(property_block& b) {
            is_token(m[s + 1], ":"))
       s += 2;
     if (s >= e || (i < m.size() && m[i].kind == piece_kind::body) || declares_no_data(m[s])) continue;
+    const bool computed = is_computed_qualifier(m, s, e);
+    if (computed) qualifiers.push_back(s++);
     bool type_has_handle = false;  // read from the first declarator: the type is written there
     std::vector<declarator_range> declarators = split_declarators(m, s, e);
+    const std::size_t first_field = b.fields.size();
     for (std::size_t di = 0; di < declarators.size(); ++di)
       add_field(b, declarators[di].first, declarators[di].second, di == 0, type_has_handle);
+    for (std::size_t f = first_field; f < b.fields.size(); ++f) b.fields[f].computed = computed;
   }
+  // Fields and value-initialisations point at tokens, not at pieces: they
+  // stay right when the qualifiers go.
+  for (auto q = qualifiers.rbegin(); q != qualifiers.rend(); ++q)
+    b.members.erase(b.members.begin() + static_cast<std::ptrdiff_t>(*q));
 }
 
 // One declarator [ds, de) of a data member: its name becomes a field

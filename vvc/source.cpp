@@ -1,9 +1,5 @@
 #include "source.hpp"
 
-#include <cerrno>
-#include <cstring>
-#include <sys/stat.h>
-
 #include <vv/io/files.hpp>
 
 namespace vvc {
@@ -45,24 +41,7 @@ std::string source_file::folder() const { return vv::io::folder_of(path); }
 const source_file* source_set::load(const std::string& path, std::string* why) {
   // Only a regular file of a sensible size is a program: a folder would read
   // as an empty program, /dev/zero would never end, a FIFO would block.
-  struct stat st {};
-  if (stat(path.c_str(), &st) != 0) {
-    if (why) *why = std::strerror(errno);
-    return nullptr;
-  }
-  if (S_ISDIR(st.st_mode)) {
-    if (why) *why = "it is a folder, not a file";
-    return nullptr;
-  }
-  if (!S_ISREG(st.st_mode)) {
-    if (why) *why = "it is not a regular file (a device, a pipe or a socket)";
-    return nullptr;
-  }
-  if (static_cast<unsigned long long>(st.st_size) > max_source_bytes) {
-    if (why) *why = "it is larger than " + std::to_string(max_source_bytes >> 20) + " MiB";
-    return nullptr;
-  }
-  std::optional<std::string> read = vv::io::read_file(path, why);
+  std::optional<std::string> read = vv::io::read_file(path, why, vv::io::program_file_limit);
   if (!read) return nullptr;
   std::string text = std::move(*read);
   // A UTF-8 byte-order mark, as some editors write: not part of the program.

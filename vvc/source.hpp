@@ -21,14 +21,12 @@ struct source_file {
   std::string folder() const;
 };
 
-//! The largest program file read (a generated one can be big, but not
-//! without bound).
-constexpr unsigned long long max_source_bytes = 64ull << 20;
-
 class source_set {
  public:
-  //! Reads a regular file of at most max_source_bytes, without a leading
-  //! UTF-8 byte-order mark; nullptr (and *why set) when it cannot be read.
+  //! Reads a regular file of at most vv::io::program_file_limit (a
+  //! generated program can be big, but not without bound), without a
+  //! leading UTF-8 byte-order mark; nullptr (and *why set) when it cannot
+  //! be read.
   const source_file* load(const std::string& path, std::string* why);
   //! Adds text under a name (tests, fuzzing, standard input).
   const source_file* add(std::string path, std::string text);

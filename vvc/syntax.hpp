@@ -128,6 +128,7 @@ struct stmt {
 struct field {
   const token* name = nullptr;
   bool in_files = true;  // written to .vvm (not vertex-, mesh- or pointer-typed ones)
+  bool computed = false;  // `computed`: the program computes it; files need not give it
 };
 
 //! A property block: edge { }, vertex { } or mesh { }.

@@ -110,6 +110,33 @@ bench_input make_icosphere(int subdivisions)
   return mesh;
 }
 
+bench_input make_quad_torus(int n)
+{
+  if (n < 3) throw std::runtime_error("a quad torus needs at least 3 x 3 quads");
+  const double big = 1.0, small = 0.4, two_pi = 6.283185307179586;
+  bench_input mesh;
+  for (int i = 0; i < n; ++i)
+    for (int j = 0; j < n; ++j) {
+      const double u = two_pi * i / n, v = two_pi * j / n;
+      mesh.points.push_back({(big + small * std::cos(v)) * std::cos(u),
+                             (big + small * std::cos(v)) * std::sin(u), small * std::sin(v)});
+    }
+  const auto at = [n](int i, int j) { return static_cast<std::uint32_t>((i % n) * n + j % n); };
+  // Around the big circle (i), then around the tube (j): counter-clockwise seen from outside.
+  for (int i = 0; i < n; ++i)
+    for (int j = 0; j < n; ++j) mesh.quads.push_back({at(i, j), at(i + 1, j), at(i + 1, j + 1), at(i, j + 1)});
+  return mesh;
+}
+
+std::vector<std::vector<std::uint32_t>> bench_input::polygons() const
+{
+  std::vector<std::vector<std::uint32_t>> faces;
+  faces.reserve(triangles.size() + quads.size());
+  for (const auto& t : triangles) faces.push_back({t[0], t[1], t[2]});
+  for (const auto& q : quads) faces.push_back({q[0], q[1], q[2], q[3]});
+  return faces;
+}
+
 bench_input read_input(const std::string& path)
 {
   if (!std::ifstream(path)) throw std::runtime_error("cannot open input file '" + path + "'");

@@ -3,8 +3,8 @@
 // state, replace/make), on a mesh built from the same triangles.
 #include "bench_result.hpp"
 #include "heap_usage.hpp"
+#include "stopwatch.hpp"
 
-#include <chrono>
 #include <vector>
 
 #include <vv/io/from_faces.hpp>
@@ -24,10 +24,9 @@ bench_result run_vvlib_loop(const bench_input& input, int levels, bool keep_posi
     graph::mesh S(ctx);
     vv::build_from_faces(S, input.points, faces, "bench input");
 
-    const auto start = std::chrono::steady_clock::now();
+    const stopwatch timer;
     for (int i = 0; i < levels; ++i) loop_example::subdivide(S);
-    const auto stop = std::chrono::steady_clock::now();
-    result.ms = std::chrono::duration<double, std::milli>(stop - start).count();
+    timer.stop(result);
     result.bytes = heap_in_use() - heap_before;
 
     result.vertices = S.size();

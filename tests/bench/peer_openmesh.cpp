@@ -1,11 +1,16 @@
-// Reference 1: OpenMesh's uniform Loop subdivider on a double-precision TriMesh.
+// Reference 1: OpenMesh's uniform subdividers (Loop, sqrt(3), modified
+// butterfly on a TriMesh; Catmull-Clark on a PolyMesh), double precision.
 #include "bench_result.hpp"
 #include "heap_usage.hpp"
+#include "stopwatch.hpp"
 
+#include <OpenMesh/Core/Mesh/PolyMesh_ArrayKernelT.hh>
 #include <OpenMesh/Core/Mesh/TriMesh_ArrayKernelT.hh>
+#include <OpenMesh/Tools/Subdivider/Uniform/CatmullClarkT.hh>
 #include <OpenMesh/Tools/Subdivider/Uniform/LoopT.hh>
+#include <OpenMesh/Tools/Subdivider/Uniform/ModifiedButterFlyT.hh>
+#include <OpenMesh/Tools/Subdivider/Uniform/Sqrt3T.hh>
 
-#include <chrono>
 #include <stdexcept>
 #include <string>
 
@@ -16,36 +21,41 @@ struct om_traits : OpenMesh::DefaultTraits {
   using Point = OpenMesh::Vec3d;
   using Normal = OpenMesh::Vec3d;
 };
-using om_mesh = OpenMesh::TriMesh_ArrayKernelT<om_traits>;
+using om_tri_mesh = OpenMesh::TriMesh_ArrayKernelT<om_traits>;
+using om_poly_mesh = OpenMesh::PolyMesh_ArrayKernelT<om_traits>;
 
-void build(om_mesh& mesh, const bench_input& input)
+template <class Mesh>
+void build(Mesh& mesh, const bench_input& input)
 {
-  std::vector<om_mesh::VertexHandle> handles;
+  std::vector<typename Mesh::VertexHandle> handles;
   handles.reserve(input.points.size());
   for (const auto& p : input.points) handles.push_back(mesh.add_vertex({p[0], p[1], p[2]}));
-  for (const auto& t : input.triangles)
-    if (!mesh.add_face(handles[t[0]], handles[t[1]], handles[t[2]]).is_valid())
-      throw std::runtime_error("OpenMesh rejected a triangle (non-manifold input)");
+  std::vector<typename Mesh::VertexHandle> corners;
+  for (const auto& face : input.polygons()) {
+    corners.clear();
+    for (std::uint32_t i : face) corners.push_back(handles[i]);
+    if (!mesh.add_face(corners).is_valid())
+      throw std::runtime_error("OpenMesh rejected a face (non-manifold input)");
+  }
 }
 
-}  // namespace
-
-bench_result run_openmesh_loop(const bench_input& input, int levels, bool keep_positions)
+// Subdivider is one of OpenMesh's uniform subdividers of Mesh.
+template <class Mesh, class Subdivider>
+bench_result run(const bench_input& input, int levels, bool keep_positions)
 {
   bench_result result;
   const std::size_t heap_before = heap_in_use();
-  om_mesh mesh;
+  Mesh mesh;
   build(mesh, input);
 
-  const auto start = std::chrono::steady_clock::now();
+  const stopwatch timer;
   {
-    OpenMesh::Subdivider::Uniform::LoopT<om_mesh, double> loop;
-    loop.attach(mesh);
-    loop(static_cast<std::size_t>(levels));
-    loop.detach();
+    Subdivider subdivide;
+    subdivide.attach(mesh);
+    subdivide(static_cast<std::size_t>(levels));
+    subdivide.detach();
   }
-  const auto stop = std::chrono::steady_clock::now();
-  result.ms = std::chrono::duration<double, std::milli>(stop - start).count();
+  timer.stop(result);
   result.bytes = heap_in_use() - heap_before;
 
   result.vertices = mesh.n_vertices();
@@ -58,4 +68,28 @@ bench_result run_openmesh_loop(const bench_input& input, int levels, bool keep_p
     }
   }
   return result;
+}
+
+}  // namespace
+
+bench_result run_openmesh_loop(const bench_input& input, int levels, bool keep_positions)
+{
+  return run<om_tri_mesh, OpenMesh::Subdivider::Uniform::LoopT<om_tri_mesh, double>>(input, levels, keep_positions);
+}
+
+bench_result run_openmesh_sqrt3(const bench_input& input, int levels, bool keep_positions)
+{
+  return run<om_tri_mesh, OpenMesh::Subdivider::Uniform::Sqrt3T<om_tri_mesh, double>>(input, levels, keep_positions);
+}
+
+bench_result run_openmesh_butterfly(const bench_input& input, int levels, bool keep_positions)
+{
+  return run<om_tri_mesh, OpenMesh::Subdivider::Uniform::ModifiedButterflyT<om_tri_mesh, double>>(
+      input, levels, keep_positions);
+}
+
+bench_result run_openmesh_catmull_clark(const bench_input& input, int levels, bool keep_positions)
+{
+  return run<om_poly_mesh, OpenMesh::Subdivider::Uniform::CatmullClarkT<om_poly_mesh, double>>(
+      input, levels, keep_positions);
 }

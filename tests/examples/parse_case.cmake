@@ -4,9 +4,21 @@
 # scripts/make-gallery). Lines are `key = value` (a `#` that starts a word
 # starts a comment); a key that is not one of those, or a line that is not
 # a `key = value`, is an error naming the file and line: a typo must not
-# drop a check without a word.
+# drop a check without a word. Run as a script, it prints the error as one
+# unwrapped line, "error: FILE:LINE: ...", before failing: CMake wraps its
+# own error messages at a width, so a longer path moves the line breaks.
 cmake_policy(SET CMP0057 NEW)  # if(IN_LIST), also when run as a script
 set(VV_CASE_KEYS model steps mesh vertices edges faces max_face tolerance view gallery_mesh)
+
+# Stops at a case file's error: in a configure, as CMake's error; as a
+# script, first as one line that tests can match whatever the path.
+function(vv_case_error text)
+  if(CMAKE_SCRIPT_MODE_FILE)
+    message(NOTICE "error: ${text}")
+    message(FATAL_ERROR "the case file is refused (see the line above)")
+  endif()
+  message(FATAL_ERROR "${text}")
+endfunction()
 
 function(vv_parse_case file)
   foreach(key IN LISTS VV_CASE_KEYS)
@@ -21,18 +33,18 @@ function(vv_parse_case file)
       continue()
     endif()
     if(NOT line MATCHES "^[ \t]*([A-Za-z_]+)[ \t]*=[ \t]*(.*[^ \t])[ \t]*$")
-      message(FATAL_ERROR "${file}:${n}: expected 'key = value', found '${line}'")
+      vv_case_error("${file}:${n}: expected 'key = value', found '${line}'")
     endif()
     set(key ${CMAKE_MATCH_1})
     set(value "${CMAKE_MATCH_2}")
     if(NOT key IN_LIST VV_CASE_KEYS)
       string(REPLACE ";" ", " known "${VV_CASE_KEYS}")
-      message(FATAL_ERROR "${file}:${n}: unknown key '${key}' (known: ${known})")
+      vv_case_error("${file}:${n}: unknown key '${key}' (known: ${known})")
     endif()
     set(${key} "${value}")
   endforeach()
   if(NOT model OR steps STREQUAL "")
-    message(FATAL_ERROR "${file}: needs 'model =' and 'steps ='")
+    vv_case_error("${file}: needs 'model =' and 'steps ='")
   endif()
   foreach(key IN LISTS VV_CASE_KEYS)
     set(${key} "${${key}}" PARENT_SCOPE)

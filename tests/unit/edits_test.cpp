@@ -114,6 +114,30 @@ TEST_F(Edits, MakeWithDuplicateInALongListIsAnError) {
   EXPECT_TRUE(ok());
 }
 
+// Distinct vertices whose slots are equal modulo 64 (the quick duplicate
+// filter cannot tell them apart) are no duplicates; a real duplicate among
+// them still is one.
+TEST_F(Edits, MakeTellsSlotsEqualModulo64FromDuplicates) {
+  std::vector<V> made;
+  for (int i = 0; i < 200; ++i) made.push_back(ctx.new_vertex());
+  std::vector<V> list;  // the first three share a slot modulo 64, so do the last three
+  for (const V& u : made)
+    if (u.slot() % 64 == made[0].slot() % 64 && list.size() < 3) list.push_back(u);
+  for (const V& u : made)
+    if (u.slot() % 64 == made[1].slot() % 64 && list.size() < 6) list.push_back(u);
+  ASSERT_EQ(list.size(), 6u);
+  vv::make_nb_from(v, list);
+  EXPECT_EQ(vv::valence(v), 6u);
+  EXPECT_EQ(vv::next_to(list[2], v), list[3]);
+
+  V w = ctx.new_vertex();
+  std::vector<V> twice = {list[0], list[3], list[1], list[4], list[3]};
+  EXPECT_TRUE(throws_vv_error([&] { vv::make_nb_from(w, twice); },
+                              {"make", "vertex " + std::to_string(list[3].label()) + " is listed twice"}));
+  EXPECT_EQ(vv::valence(w), 0u);
+  EXPECT_TRUE(ok());
+}
+
 TEST_F(Edits, MakeWithNullTargetIsAnError) {
   EXPECT_TRUE(throws_vv_error([&] { vv::make_nb(V(), {a, b}); },
                               {"make", "null", "edits_test.cpp"}));

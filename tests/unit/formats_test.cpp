@@ -668,6 +668,8 @@ TEST(FormatErrors, UnreadableContents) {
       {"truncated.ply", "ply\nformat ascii 1.0\nelement vertex 2\n"},
       {"bad_index.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 9\n"},
   };
+  // Each names the file, and the line where the format has lines (the
+  // messages themselves: polygon_readers_test.cpp).
   for (const Case& c : cases) {
     const std::string path = scratch_dir() + c.name;
     spit(path, c.text);
@@ -676,7 +678,8 @@ TEST(FormatErrors, UnreadableContents) {
       ADD_FAILURE() << "read " << c.name;
     } catch (const vv::error& e) {
       std::string msg = e.what();
-      EXPECT_EQ(msg.rfind(path + ": ", 0), 0u) << msg;
+      EXPECT_EQ(msg.rfind(path + ":", 0), 0u) << msg;
+      EXPECT_EQ(e.file(), path);
     }
   }
   EXPECT_EQ(positions(M), before);

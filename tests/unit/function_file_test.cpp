@@ -277,7 +277,7 @@ TEST(UtilFunction, FileErrorsNameFileAndLine) {
   const std::string missing = test_files::scratch_dir() + "missing.func";
   EXPECT_EQ(read_error(missing), missing + ": cannot open: No such file or directory");
   EXPECT_EQ(read_error(test_files::scratch_dir()),
-            test_files::scratch_dir() + ": cannot open: it is a directory");
+            test_files::scratch_dir() + ": cannot open: it is a folder, not a file");
 }
 
 TEST(UtilFunction, ErrorsCarryFileAndLine) {

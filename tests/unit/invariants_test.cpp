@@ -85,7 +85,7 @@ TEST_F(Invariants, DeadNeighbourIsReported) {
 
 TEST_F(Invariants, OldStateIsCheckedToo) {
   vv::synchronise(S);
-  ctx.old_nb(v[1].slot()).insert(1, entry_traits::make(v[1].slot()));
+  ctx.writable_old_nb(v[1].slot()).insert(1, entry_traits::make(v[1].slot()));
   EXPECT_NE(violations().find("vertex 2 (old): is its own neighbour"), std::string::npos)
       << violations();
 }

@@ -189,6 +189,32 @@ TEST_F(Queries, AHugeCountIsTakenModuloTheValence) {
   EXPECT_EQ(vv::prev_to(p[1], p[0], big), backward);
 }
 
+// Every position, count and direction of a fan of each valence 1..9,
+// against index arithmetic: the cyclic step avoids division for counts
+// below the valence and must agree with the modulo everywhere.
+TEST(CyclicSteps, NextIToAndPrevIToAgreeWithModuloArithmeticOnEveryValence) {
+  for (unsigned n = 1; n <= 9; ++n) {
+    G::context ctx;
+    V centre = ctx.new_vertex();
+    std::vector<V> ring;
+    for (unsigned i = 0; i < n; ++i) ring.push_back(ctx.new_vertex());
+    vv::make_nb_from(centre, ring);
+    for (unsigned pos = 0; pos < n; ++pos)
+      for (long count = 1; count <= 3 * long(n) + 1; ++count) {
+        unsigned k = static_cast<unsigned>(count % long(n));
+        EXPECT_EQ(vv::next_to(ring[pos], centre, count), ring[(pos + k) % n])
+            << "valence " << n << ", position " << pos << ", count " << count;
+        EXPECT_EQ(vv::prev_to(ring[pos], centre, count), ring[(pos + n - k) % n])
+            << "valence " << n << ", position " << pos << ", count " << count;
+      }
+    for (unsigned pos = 0; pos < n; ++pos) {
+      vv::flag_in(ring[pos], centre);
+      EXPECT_EQ(vv::next_to_flag(centre), ring[(pos + 1) % n]) << "valence " << n << ", flag at " << pos;
+      EXPECT_EQ(vv::prev_to_flag(centre), ring[(pos + n - 1) % n]) << "valence " << n << ", flag at " << pos;
+    }
+  }
+}
+
 TEST_F(Queries, PrevIToWithOneIsPrevTo) {
   for (V x : vv::each(p[0])) EXPECT_EQ(vv::prev_to(x, p[0], 1), vv::prev_to(x, p[0]));
   EXPECT_EQ(vv::prev_to(p[5], p[0], 1).label(), 2u);

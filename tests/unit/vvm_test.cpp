@@ -3,7 +3,9 @@
 // malformed files (tests/data/malformed), each of which must be reported as
 // "file:line: problem" and leave the target mesh exactly as it was.
 #include <vv/vv.hpp>
+#include <vv/io/mesh_io.hpp>
 #include <vv/io/vvm.hpp>
+#include <vv/neighbourhood_check.hpp>
 
 #include <util/point.hpp>
 
@@ -288,6 +290,88 @@ TEST(VvmWarnings, AMeshFieldTheFileLacksAndACompleteFileIsSilent) {
   PG::mesh P(quiet);
   P.readXMLFile(pyramid_path);
   EXPECT_FALSE(any);
+}
+
+// A field the program computes itself (`computed double radius;` in a
+// .vvp) is no news when a file lacks it, wholly or in part.
+struct WithComputed {
+  Pt pos;
+  double radius = 0;
+  int ring = 0;
+  static constexpr const char* vv_computed_fields[] = {"radius", "ring"};
+  template <class F>
+  void vv_fields(F&& f) {
+    f("pos", pos);
+    f("radius", radius);
+    f("ring", ring);
+  }
+};
+using CG = vv::graph<WithComputed>;
+
+TEST(VvmWarnings, AComputedFieldTheFileLacksIsNoWarning) {
+  EXPECT_TRUE(vv::is_computed_field<WithComputed>("radius"));
+  EXPECT_FALSE(vv::is_computed_field<WithComputed>("pos"));
+  EXPECT_FALSE(vv::is_computed_field<VP>("c"));
+  CG::context ctx;
+  std::vector<std::string> said;
+  ctx.warning_sink = [&](const std::string& m) { said.push_back(m); };
+  CG::mesh M(ctx);
+  M.readXMLFile(pyramid_path, vv::where{"model.vvp", 3});
+  EXPECT_EQ(M.size(), 6u);
+  std::string path = scratch_dir() + "some_rings.vvm";
+  std::ofstream(path) << "<mesh>\n  <v pos=\"0 0 0\" ring=\"2\" nb=\"\"/>\n  <v pos=\"1 0 0\" nb=\"\"/>\n</mesh>\n";
+  M.readXMLFile(path, vv::where{"model.vvp", 4});
+  EXPECT_EQ(said, std::vector<std::string>{});
+  // What the file gives is read all the same.
+  std::vector<int> rings;
+  for (CG::vertex v : M) rings.push_back(v->ring);
+  EXPECT_EQ(rings, (std::vector<int>{2, 0}));
+}
+
+// A warning is said once in a run: the same file read again, into other
+// meshes, under another spelling of its path, or by readFile.
+TEST(VvmWarnings, AreSaidOnceAcrossReadsMeshesAndSpellings) {
+  G::context ctx;
+  std::vector<std::string> said;
+  ctx.warning_sink = [&](const std::string& m) { said.push_back(m); };
+  const std::string folder = VV_SOURCE_DIR "/models";
+  G::mesh A(ctx), B(ctx);
+  A.readXMLFile(pyramid_path, vv::where{"model.vvp", 3});
+  A.readXMLFile(pyramid_path, vv::where{"model.vvp", 4});
+  B.readXMLFile(folder + "/./pyramid.vvm", vv::where{"model.vvp", 5});
+  B.readXMLFile(folder + "/../models/pyramid.vvm", vv::where{"model.vvp", 6});
+  B.readFile(pyramid_path, vv::where{"model.vvp", 7});
+  EXPECT_EQ(said.size(), 3u);  // generation, name, c: each once
+  for (const std::string& m : said) EXPECT_NE(m.find("(read at model.vvp:3)"), std::string::npos) << m;
+}
+
+// =====================================================================
+// Edits: a read notes its edits at the line that read the file, which
+// `vvinterpreter --check` names when a neighbourhood is found broken
+// =====================================================================
+
+TEST(VvmEdits, AreNotedAtTheLineThatReadTheFile) {
+  PG::context ctx;
+  ctx.track_edits(true);
+  PG::mesh M(ctx);
+  M.readXMLFile(pyramid_path, vv::where{"model.vvp", 5});
+  EXPECT_TRUE(vv::first_broken_neighbourhood(M, true).problem.empty());
+  // Vertex 2 lists vertex 0, which does not list it back.
+  std::string path = scratch_dir() + "one_way.vvm";
+  std::ofstream(path) << "<mesh>\n  <v pos=\"0 0 0\" nb=\"1\"/>\n  <v pos=\"1 0 0\" nb=\"0 2\"/>\n"
+                         "  <v pos=\"0 1 0\" nb=\"1 0\"/>\n</mesh>\n";
+  M.readXMLFile(path, vv::where{"model.vvp", 9});
+  for (std::uint32_t id : M.slots()) {
+    if (!id) continue;
+    vv::where at = ctx.last_edit(id).at;
+    ASSERT_NE(at.file, nullptr);
+    EXPECT_EQ(std::string(at.file) + ":" + std::to_string(at.line), "model.vvp:9");
+  }
+  vv::broken_neighbourhood broken = vv::first_broken_neighbourhood(M, true);
+  ASSERT_NE(broken.at.file, nullptr);
+  EXPECT_EQ(std::string(broken.at.file) + ":" + std::to_string(broken.at.line), "model.vvp:9");
+  EXPECT_NE(broken.problem.find("(last edits: vertex 9 at model.vvp:9, vertex 7 at model.vvp:9)"), std::string::npos)
+      << broken.problem;
 }
 
 // =====================================================================

@@ -18,7 +18,7 @@ run(1 "missing.vvp: error: cannot read file: No such file or directory" ${WORK}/
 # Only regular files are programs (issue 9, item 8): a folder is not an
 # empty program, and /dev/zero would never end.
 run(1 "error: cannot read file: it is a folder, not a file" ${WORK} -o ${WORK}/x.cpp)
-run(1 "error: cannot read file: it is not a regular file" /dev/zero -o ${WORK}/x.cpp)
+run(1 "error: cannot read file: it is a character device, not a regular file" /dev/zero -o ${WORK}/x.cpp)
 file(REMOVE ${WORK}/ok.cpp)
 run(0 "^$" ${PROGRAM} -o ${WORK}/ok.cpp)
 if(NOT EXISTS ${WORK}/ok.cpp)

@@ -10,6 +10,8 @@
 #include <utility>
 #include <vector>
 
+#include <vv/io/files.hpp>
+
 #include "app/files.hpp"
 #include "compile/property_messages.hpp"
 #include "source.hpp"
@@ -111,7 +113,7 @@ class vvp_files {
     if (it == lines_.end()) {
       std::vector<std::string> v;
       std::error_code ec;
-      if (std::filesystem::is_regular_file(file, ec) && std::filesystem::file_size(file, ec) <= vvc::max_source_bytes) {
+      if (std::filesystem::is_regular_file(file, ec) && std::filesystem::file_size(file, ec) <= vv::io::program_file_limit.bytes) {
         std::istringstream in(read_file(file).value_or(""));
         for (std::string l; std::getline(in, l);) v.push_back(l);
       }

@@ -1,13 +1,21 @@
-// The polygon formats, through CGAL's polygon-soup readers and writers,
-// which keep doubles exact (OpenMesh 9's round coordinates to float).
-// Compiled once into vv_formats (see vv/io/polygon_files.hpp).
+// The polygon formats: reading by extension (the readers are in this
+// folder: OBJ, OFF and STL read by vv, with lines and reasons; PLY through
+// CGAL), and writing through CGAL's polygon-soup writers, which keep
+// doubles exact (OpenMesh 9's round coordinates to float). Compiled once
+// into vv_formats (see vv/io/polygon_files.hpp).
 #include <vv/io/polygon_files.hpp>
 
 #include <CGAL/IO/polygon_soup_io.h>
 #include <CGAL/Simple_cartesian.h>
 
+#include <cstdint>
 #include <cstdio>
+#include <optional>
 #include <sstream>
+
+#include <vv/io/face_check.hpp>
+
+#include "readers.hpp"
 
 namespace vv {
 
@@ -53,18 +61,41 @@ std::vector<std::vector<std::size_t>> fan_triangles(const std::vector<std::vecto
 polygon_soup read_polygon_file(const std::string& path) {
   std::string ext = io::extension_of(path);
   if (!detail::is_polygon_format(ext)) detail::unknown_format(path);
-  io::read_text_file(path);  // a clear message for a missing or unreadable file
-  std::vector<soup_point> soup_points;
-  std::vector<std::vector<std::size_t>> soup_faces;
-  if (!CGAL::IO::read_polygon_soup(path, soup_points, soup_faces))
-    throw error(path, 0, "not a readable " + ext.substr(1) + " file");
+  // Read once, refusing what is no regular file or is too large; the
+  // readers work on the bytes.
+  std::string why;
+  std::optional<std::string> bytes = io::read_file(path, &why, io::mesh_file_limit);
+  if (!bytes) throw error(path, 0, "cannot open file: " + why);
+  if (ext == ".obj") return formats::read_obj(path, *bytes);
+  if (ext == ".off") return formats::read_off(path, *bytes);
+  if (ext == ".stl") return formats::read_stl(path, *bytes);
+  return formats::read_ply(path, *bytes);
+}
+
+namespace formats {
+
+polygon_soup checked_soup(const std::string& path, std::vector<std::array<double, 3>> points,
+                          const std::vector<std::vector<std::size_t>>& faces) {
   polygon_soup soup;
-  soup.points.reserve(soup_points.size());
-  for (const auto& p : soup_points) soup.points.push_back({p.x(), p.y(), p.z()});
-  soup.faces.reserve(soup_faces.size());
-  for (const auto& f : soup_faces) soup.faces.emplace_back(f.begin(), f.end());
+  soup.faces.reserve(faces.size());
+  for (std::size_t f = 0; f < faces.size(); ++f) {
+    const std::vector<std::size_t>& face = faces[f];
+    auto fail = [&](const std::string& problem) { throw error(path, 0, "face " + std::to_string(f) + ": " + problem); };
+    std::string few = io::too_few_corners(face.size());
+    if (!few.empty()) fail(few);
+    for (std::size_t i : face)
+      if (i >= points.size())  // an index read as a negative number shows as one
+        fail(static_cast<std::int64_t>(i) < 0 ? std::to_string(static_cast<std::int64_t>(i)) + " is not a vertex index"
+                                               : io::missing_vertex_problem(i, points.size(), 0));
+    std::string twice = io::repeated_corner_problem(face, 0);
+    if (!twice.empty()) fail(twice);
+    soup.faces.emplace_back(face.begin(), face.end());
+  }
+  soup.points = std::move(points);
   return soup;
 }
+
+}  // namespace formats
 
 void write_polygon_file(const std::string& path, const std::vector<std::array<double, 3>>& points,
                         std::vector<std::vector<std::size_t>> faces,

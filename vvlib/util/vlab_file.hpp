@@ -26,14 +26,12 @@
 namespace util::vlab {
 
 //! The whole file (the file objects resolve relative names first:
-//! vv/file_objects.hpp).
+//! vv/file_objects.hpp). A path that is no regular file (a folder, a FIFO,
+//! a link to a device), or a file over vv::io::data_file_limit, is refused
+//! unread.
 inline std::string read_bytes(const std::string& path) {
-  std::error_code ec;
-  // An ifstream opens a directory without complaint and reads nothing.
-  if (std::filesystem::is_directory(path, ec))
-    throw vv::error(path, 0, "cannot open: it is a directory");
   std::string why;
-  std::optional<std::string> bytes = vv::io::read_file(path, &why);
+  std::optional<std::string> bytes = vv::io::read_file(path, &why, vv::io::data_file_limit);
   if (!bytes) throw vv::error(path, 0, "cannot open: " + why);
   return std::move(*bytes);
 }

@@ -3,11 +3,20 @@
 //
 // Storage. Vertices live in fixed-size chunks that never move, so a
 // reference to a property stays valid while other vertices are created.
-// Inside a chunk the parts of a vertex (reference count, label, current and
-// old neighbourhood, current and old properties) are separate arrays that
-// grow in lockstep: a scan touches only the array it needs. Creating a
-// vertex reuses a freed slot or takes the next one; nothing is allocated per
-// vertex.
+// Inside a chunk the parts of a vertex (current neighbourhood, current
+// properties) are separate arrays that grow in lockstep: a scan touches
+// only the array it needs. Reference counts and labels, which no reference
+// outlives, are flat arrays over all slots (one load fewer per access).
+// Creating a vertex reuses a freed slot or takes the next one; nothing is
+// allocated per vertex.
+//
+// Old state. The synchronised neighbourhoods and properties of a chunk live
+// in a block of their own, made when the first vertex of the chunk is
+// synchronised. Vertices are created in order, so after a subdivision step
+// the vertices it created (three quarters of a Loop mesh) fill chunks that
+// no synchronise has reached and cost no old state; a vertex never
+// synchronised reads as an empty neighbourhood and value-initialised
+// properties (one shared instance).
 //
 // Lifetime. A vertex lives while anything refers to it. Handles (program
 // variables) and mesh memberships are counted; neighbourhood entries are
@@ -59,7 +68,7 @@ class context {
     // storage is still whole.
     for (std::uint32_t id = 1; id < next_slot_; ++id) {
       props(id) = vertex_props();
-      old_props(id) = vertex_props();
+      if (at(id).old) writable_old_props(id) = vertex_props();
     }
   }
 
@@ -98,10 +107,9 @@ class context {
   //! Remember where each neighbourhood was last edited (vvinterpreter
   //! --check names that line when a neighbourhood is found broken).
   void track_edits(bool on) { tracking_edits_ = on; }
+  //! On every edit: a test and a branch unless tracking is on.
   void note_edit(std::uint32_t id, const where& w) {
-    if (!tracking_edits_) return;
-    if (id >= last_edit_.size()) last_edit_.resize(std::max<std::size_t>(next_slot_, id + 1));
-    last_edit_[id] = {w, ++edits_};
+    if (tracking_edits_) record_edit(id, w);
   }
   struct edit_mark {
     where at;               //!< file null: not edited while tracked
@@ -121,12 +129,22 @@ class context {
   }
 
   // ---- slot access, used by the algebra (ids come from handles) ----
-  std::uint32_t& refs(std::uint32_t id) noexcept { return at(id).refs[id & mask]; }
-  std::uint32_t label(std::uint32_t id) const noexcept { return at(id).label[id & mask]; }
+  std::uint32_t& refs(std::uint32_t id) noexcept { return refs_[id]; }
+  std::uint32_t label(std::uint32_t id) const noexcept { return labels_[id]; }
   nb_type& nb(std::uint32_t id) noexcept { return at(id).nb[id & mask]; }
-  nb_type& old_nb(std::uint32_t id) noexcept { return at(id).old_nb[id & mask]; }
   vertex_props& props(std::uint32_t id) noexcept { return at(id).props[id & mask]; }
-  vertex_props& old_props(std::uint32_t id) noexcept { return at(id).old_props[id & mask]; }
+  //! The old state: what the last synchronise saved, read-only.
+  const nb_type& old_nb(std::uint32_t id) const noexcept {
+    const chunk& c = at(id);
+    return c.old ? c.old->nb[id & mask] : never_synchronised_nb_;
+  }
+  const vertex_props& old_props(std::uint32_t id) const noexcept {
+    const chunk& c = at(id);
+    return c.old ? c.old->props[id & mask] : never_synchronised_props_;
+  }
+  //! The old state to write (synchronise), made on first use.
+  nb_type& writable_old_nb(std::uint32_t id) { return old_block_of(id).nb[id & mask]; }
+  vertex_props& writable_old_props(std::uint32_t id) { return old_block_of(id).props[id & mask]; }
   bool is_live(std::uint32_t id) const noexcept {
     return id != 0 && id < next_slot_ && label(id) != 0;
   }
@@ -154,27 +172,46 @@ class context {
  private:
   static constexpr std::uint32_t mask = chunk_size - 1;
 
-  struct chunk {
-    std::uint32_t refs[chunk_size];
-    std::uint32_t label[chunk_size];  // 0: the slot is free
+  struct old_block {
+    old_block() {
+      for (nb_type& o : nb) o.set_flag(nb_type::never_synchronised);
+    }
     nb_type nb[chunk_size];
-    nb_type old_nb[chunk_size];
     vertex_props props[chunk_size];
-    vertex_props old_props[chunk_size];
+  };
+  struct chunk {
+    nb_type nb[chunk_size];
+    vertex_props props[chunk_size];
+    std::unique_ptr<old_block> old;  // null until a vertex of the chunk is synchronised
   };
 
   chunk& at(std::uint32_t id) noexcept { return *chunks_[id >> chunk_bits]; }
   const chunk& at(std::uint32_t id) const noexcept { return *chunks_[id >> chunk_bits]; }
 
   void add_chunk() {
-    // Value-initialisation zeroes counts, labels and the properties.
+    // Value-initialisation zeroes the properties.
     chunks_.push_back(std::unique_ptr<chunk>(new chunk()));
-    for (nb_type& o : chunks_.back()->old_nb) o.set_flag(nb_type::never_synchronised);
+    refs_.resize(chunks_.size() * chunk_size, 0u);
+    labels_.resize(chunks_.size() * chunk_size, 0u);
+  }
+  old_block& old_block_of(std::uint32_t id) {
+    chunk& c = at(id);
+    if (!c.old) c.old.reset(new old_block());
+    return *c.old;
   }
 
   std::uint32_t allocate_slot();
+  [[gnu::noinline]] void record_edit(std::uint32_t id, const where& w) {
+    if (id >= last_edit_.size()) last_edit_.resize(std::max<std::size_t>(next_slot_, id + 1));
+    last_edit_[id] = {w, ++edits_};
+  }
   void free_slot(std::uint32_t id);
 
+  // Counts and labels are one array each over all slots, not per chunk:
+  // every handle copy touches a count, every `p < q` two labels, and no
+  // reference to either outlives a call, so they may move when they grow.
+  std::vector<std::uint32_t> refs_;
+  std::vector<std::uint32_t> labels_;  // 0: the slot is free
   std::vector<std::unique_ptr<chunk>> chunks_;
   std::vector<std::uint32_t> free_slots_;
   std::uint32_t next_slot_ = 1;
@@ -190,6 +227,8 @@ class context {
   std::vector<edit_mark> last_edit_;  // by slot, while tracking
   std::uint64_t edits_ = 0;
   edge_props empty_record_{};
+  nb_type never_synchronised_nb_{typename nb_type::never_synchronised_tag()};
+  vertex_props never_synchronised_props_{};
 
   static constexpr std::size_t min_gc_threshold = 1u << 14;
 };
@@ -206,9 +245,8 @@ std::uint32_t context<Tr>::allocate_slot() {
     if ((next_slot_ >> chunk_bits) == chunks_.size()) add_chunk();
     id = next_slot_++;
   }
-  chunk& c = at(id);
-  c.label[id & mask] = next_label_++;
-  c.refs[id & mask] = 0;
+  labels_[id] = next_label_++;
+  refs_[id] = 0;
   ++live_;
   return id;
 }
@@ -217,14 +255,16 @@ template <class Tr>
 void context<Tr>::free_slot(std::uint32_t id) {
   chunk& c = at(id);
   std::uint32_t i = id & mask;
-  c.label[i] = 0;
+  labels_[id] = 0;
   c.nb[i].clear();
   c.nb[i].set_flag(nb_type::no_flag);
-  c.old_nb[i].clear();
-  c.old_nb[i].set_flag(nb_type::never_synchronised);
   // Resetting the properties may release handles they hold.
   c.props[i] = vertex_props();
-  c.old_props[i] = vertex_props();
+  if (c.old) {
+    c.old->nb[i].clear();
+    c.old->nb[i].set_flag(nb_type::never_synchronised);
+    c.old->props[i] = vertex_props();
+  }
   free_slots_.push_back(id);
   --live_;
 }
@@ -263,13 +303,16 @@ std::size_t context<Tr>::collect_garbage() {
 template <class Tr>
 std::size_t context<Tr>::storage_bytes() const noexcept {
   std::size_t bytes = chunks_.size() * sizeof(chunk) +
+                      (refs_.capacity() + labels_.capacity()) * sizeof(std::uint32_t) +
                       chunks_.capacity() * sizeof(std::unique_ptr<chunk>) +
                       free_slots_.capacity() * sizeof(std::uint32_t);
-  for (const auto& c : chunks_)
+  for (const auto& c : chunks_) {
+    if (c->old) bytes += sizeof(old_block);
     for (std::uint32_t i = 0; i < chunk_size; ++i) {
       if (c->nb[i].size() > Tr::inline_valence) bytes += c->nb[i].size() * sizeof(entry);
-      if (c->old_nb[i].size() > Tr::inline_valence) bytes += c->old_nb[i].size() * sizeof(entry);
+      if (c->old && c->old->nb[i].size() > Tr::inline_valence) bytes += c->old->nb[i].size() * sizeof(entry);
     }
+  }
   return bytes;
 }
 

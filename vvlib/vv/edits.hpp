@@ -7,6 +7,8 @@
 // checked (null, the target itself, or already a neighbour: errors).
 #pragma once
 
+#include "detail/inline.hpp"
+
 #include <algorithm>
 #include <cstdint>
 #include <initializer_list>
@@ -20,13 +22,13 @@ namespace vv {
 namespace detail {
 
 template <class Tr>
-auto& mutable_nb(const vertex<Tr>& v) {
+VV_INLINE auto& mutable_nb(const vertex<Tr>& v) {
   return v.ctx()->nb(v.slot());
 }
 
 // Insert x at position pos of v*, keeping the flag on its entry.
 template <class Tr>
-void insert_at(const vertex<Tr>& v, std::uint32_t pos, const vertex<Tr>& x) {
+VV_INLINE void insert_at(const vertex<Tr>& v, std::uint32_t pos, const vertex<Tr>& x) {
   using entry_traits = typename context<Tr>::entry_traits;
   auto& nb = mutable_nb(v);
   nb.insert(pos, entry_traits::make(x.slot()));
@@ -64,19 +66,28 @@ void make_neighbourhood(const vertex<Tr>& v, It first, It last, const where& w) 
     entries = spilled.data();
   }
   std::size_t k = 0;
+  // One bit per slot modulo 64: two entries can only be the same vertex
+  // when their bits collide, so most lists skip the pairwise search.
+  std::uint64_t seen = 0;
+  bool maybe_twice = false;
   for (It it = first; it != last; ++it, ++k) {
     const vertex<Tr>& x = *it;
-    if (!x) throw error(w, "make", "the list for " + name_of(v) + " contains the null vertex");
+    if (!x) raise(w, "make", [&] { return "the list for " + name_of(v) + " contains the null vertex"; });
     if (x.ctx() != v.ctx())
-      throw error(w, "make", name_of(x) + " belongs to another context than " + name_of(v));
-    if (x == v) throw error(w, "make", name_of(v) + " cannot be its own neighbour");
+      raise(w, "make", [&] { return name_of(x) + " belongs to another context than " + name_of(v); });
+    if (x == v) raise(w, "make", [&] { return name_of(v) + " cannot be its own neighbour"; });
     entries[k] = entry_traits::make(x.slot());
+    const std::uint64_t bit = std::uint64_t(1) << (x.slot() & 63u);
+    maybe_twice |= (seen & bit) != 0;
+    seen |= bit;
   }
   auto duplicate = [&](std::uint32_t id) {
     throw error(w, "make",
                 name_of(vertex<Tr>::from_slot(v.ctx(), id)) + " is listed twice for " + name_of(v));
   };
-  if (n <= small) {
+  if (!maybe_twice) {
+    // No two entries share a bit: no duplicates.
+  } else if (n <= small) {
     for (std::size_t i = 1; i < n; ++i)
       for (std::size_t j = 0; j < i; ++j)
         if (entry_id(entries[i]) == entry_id(entries[j])) duplicate(entry_id(entries[i]));
@@ -97,7 +108,7 @@ void make_neighbourhood(const vertex<Tr>& v, It first, It last, const where& w) 
 
 //! `make {a, b, c} nb_of v;`
 template <class V, detail::if_vertex_like<V> = 0>
-void make_nb(const V& target, std::initializer_list<vertex<typename V::traits_type>> list,
+VV_INLINE void make_nb(const V& target, std::initializer_list<vertex<typename V::traits_type>> list,
              where w = where::here()) {
   const auto& v = detail::edit_target(target, "make", w);
   detail::make_neighbourhood(v, list.begin(), list.end(), w);
@@ -111,7 +122,7 @@ void make_nb_from(const V& target, const Range& list, where w = where::here()) {
 
 //! `erase x from v;` (no effect when x is not a neighbour)
 template <class V, detail::if_vertex_like<V> = 0>
-void erase_from(const vertex<typename V::traits_type>& x, const V& target,
+VV_INLINE void erase_from(const vertex<typename V::traits_type>& x, const V& target,
                 where w = where::here()) {
   const auto& v = detail::edit_target(target, "erase", w);
   std::int32_t pos = detail::find(detail::mutable_nb(v), detail::slot_in(x, v.ctx()));
@@ -120,7 +131,7 @@ void erase_from(const vertex<typename V::traits_type>& x, const V& target,
 
 //! `replace a with x in v;` — x takes a's place and keeps its record.
 template <class V, detail::if_vertex_like<V> = 0>
-void replace_in(const vertex<typename V::traits_type>& a, const vertex<typename V::traits_type>& x,
+VV_INLINE void replace_in(const vertex<typename V::traits_type>& a, const vertex<typename V::traits_type>& x,
                 const V& target, where w = where::here()) {
   const auto& v = detail::edit_target(target, "replace", w);
   auto& nb = detail::mutable_nb(v);
@@ -133,7 +144,7 @@ void replace_in(const vertex<typename V::traits_type>& a, const vertex<typename 
 
 //! `splice x after a in v;`
 template <class V, detail::if_vertex_like<V> = 0>
-void splice_after(const vertex<typename V::traits_type>& x, const vertex<typename V::traits_type>& a,
+VV_INLINE void splice_after(const vertex<typename V::traits_type>& x, const vertex<typename V::traits_type>& a,
                   const V& target, where w = where::here()) {
   const auto& v = detail::edit_target(target, "splice", w);
   auto& nb = detail::mutable_nb(v);
@@ -145,7 +156,7 @@ void splice_after(const vertex<typename V::traits_type>& x, const vertex<typenam
 
 //! `splice x before a in v;`
 template <class V, detail::if_vertex_like<V> = 0>
-void splice_before(const vertex<typename V::traits_type>& x,
+VV_INLINE void splice_before(const vertex<typename V::traits_type>& x,
                    const vertex<typename V::traits_type>& a, const V& target,
                    where w = where::here()) {
   const auto& v = detail::edit_target(target, "splice", w);

@@ -3,7 +3,11 @@
 // A property struct lists its fields through a member template
 //     template <class F> void vv_fields(F&& f) { f("pos", pos); f("c", c); }
 // (the translator generates it; C++ users write it). Files (.vvm) and the
-// mesh exporters find fields by these names.
+// mesh exporters find fields by these names. A struct may also name the
+// fields the program computes itself, which a file need not give (reading
+// a file without them says nothing):
+//     static constexpr const char* vv_computed_fields[] = {"c"};
+// (a .vvp writes `computed double c;` in the block).
 //
 // Values are written with the type's `<<` and read with its `>>`, except
 // that floating-point numbers (alone or as the coordinates of a point-like
@@ -14,6 +18,7 @@
 #include <charconv>
 #include <cmath>
 #include <cstdlib>
+#include <cstring>
 #include <iomanip>
 #include <limits>
 #include <sstream>
@@ -35,6 +40,11 @@ struct has_fields : std::false_type {};
 template <class T>
 struct has_fields<T, std::void_t<decltype(std::declval<T&>().vv_fields(any_field{}))>>
     : std::true_type {};
+
+template <class T, class = void>
+struct has_computed_fields : std::false_type {};
+template <class T>
+struct has_computed_fields<T, std::void_t<decltype(T::vv_computed_fields)>> : std::true_type {};
 
 template <class T, class = void>
 struct is_point_like : std::false_type {};
@@ -82,6 +92,17 @@ void for_each_field(P& props, F&& f) {
   using mutable_p = std::remove_const_t<P>;
   // vv_fields is usually not const-qualified; reading through it is safe.
   if constexpr (detail::has_fields<mutable_p>::value) const_cast<mutable_p&>(props).vv_fields(f);
+}
+
+//! Whether the program computes the field `name` of P itself (P lists it
+//! in vv_computed_fields), so that a file need not give it.
+template <class P>
+bool is_computed_field(const char* name) {
+  if constexpr (detail::has_computed_fields<P>::value) {
+    for (const char* field : P::vv_computed_fields)
+      if (std::strcmp(field, name) == 0) return true;
+  }
+  return false;
 }
 
 //! A property value as file text.

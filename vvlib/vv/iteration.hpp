@@ -9,6 +9,8 @@
 // order, whatever the body edits; a mesh loop is the mesh's own iterator.
 #pragma once
 
+#include "detail/inline.hpp"
+
 #include <cstdint>
 #include <utility>
 #include <vector>
@@ -23,7 +25,7 @@ class neighbour_range {
  public:
   using vertex_type = vertex<Tr>;
 
-  neighbour_range(context<Tr>* ctx, const typename context<Tr>::nb_type& nb)
+  VV_INLINE neighbour_range(context<Tr>* ctx, const typename context<Tr>::nb_type& nb)
       : ctx_(ctx), pause_(*ctx), size_(nb.size()) {
     std::uint32_t* dst = size_ <= inline_size ? local_ : (spilled_.resize(size_), spilled_.data());
     for (std::uint32_t i = 0; i < size_; ++i) dst[i] = detail::entry_id(nb[i]);
@@ -74,12 +76,12 @@ mesh<Tr> each(mesh<Tr>&& m) noexcept {
   return std::move(m);
 }
 template <class Tr>
-neighbour_range<Tr> each(const vertex<Tr>& v, where w = where::here()) {
+VV_INLINE neighbour_range<Tr> each(const vertex<Tr>& v, where w = where::here()) {
   auto s = detail::view(v, "forall", w);
   return neighbour_range<Tr>(s.ctx, *s.nb);
 }
 template <class Tr>
-neighbour_range<Tr> each(const old_vertex<Tr>& v, where w = where::here()) {
+VV_INLINE neighbour_range<Tr> each(const old_vertex<Tr>& v, where w = where::here()) {
   auto s = detail::view(v, "forall", w);
   return neighbour_range<Tr>(s.ctx, *s.nb);
 }

@@ -280,8 +280,8 @@ void synchronise(const mesh<Tr>& m, where = where::here()) {
   context<Tr>* ctx = m.ctx();
   for (std::uint32_t id : m.slots()) {
     if (!id) continue;
-    ctx->old_nb(id) = ctx->nb(id);
-    ctx->old_props(id) = ctx->props(id);
+    ctx->writable_old_nb(id) = ctx->nb(id);
+    ctx->writable_old_props(id) = ctx->props(id);
   }
 }
 template <class Tr>

@@ -3,6 +3,8 @@
 // null target is an error, a missing neighbour gives the null vertex.
 #pragma once
 
+#include "detail/inline.hpp"
+
 #include <cstddef>
 #include <cstdint>
 
@@ -12,13 +14,13 @@ namespace vv {
 
 //! `valence v`
 template <class V, detail::if_vertex_like<V> = 0>
-std::size_t valence(const V& v, where w = where::here()) {
+VV_INLINE std::size_t valence(const V& v, where w = where::here()) {
   return detail::view(v, "valence", w).nb->size();
 }
 
 //! `is x in v`: x is a neighbour of v.
 template <class V, detail::if_vertex_like<V> = 0>
-bool is_in(const vertex<typename V::traits_type>& x, const V& v, where w = where::here()) {
+VV_INLINE bool is_in(const vertex<typename V::traits_type>& x, const V& v, where w = where::here()) {
   auto s = detail::view(v, "is ... in", w);
   std::uint32_t id = detail::slot_in(x, s.ctx);
   return id != 0 && detail::find(*s.nb, id) >= 0;
@@ -26,7 +28,7 @@ bool is_in(const vertex<typename V::traits_type>& x, const V& v, where w = where
 
 //! `any in v`: the first neighbour, or null when there is none.
 template <class V, detail::if_vertex_like<V> = 0>
-vertex<typename V::traits_type> any_in(const V& v, where w = where::here()) {
+VV_INLINE vertex<typename V::traits_type> any_in(const V& v, where w = where::here()) {
   using vx = vertex<typename V::traits_type>;
   auto s = detail::view(v, "any in", w);
   if (s.nb->empty()) return vx();
@@ -34,21 +36,29 @@ vertex<typename V::traits_type> any_in(const V& v, where w = where::here()) {
 }
 
 namespace detail {
+// The position `count` places after (forward) or before pos in a cyclic
+// list of n entries (pos < n). Without a division when count < n, as it
+// is for nextto/prevto: a 64-bit division costs tens of cycles, several
+// per edge in a subdivision step.
+inline std::uint32_t cyclic_step(std::uint32_t pos, std::uint32_t n, unsigned long count,
+                                 bool forward) noexcept {
+  std::uint32_t k = count < n ? static_cast<std::uint32_t>(count) : static_cast<std::uint32_t>(count % n);
+  if (forward) return pos < n - k ? pos + k : pos - (n - k);
+  return pos >= k ? pos - k : pos + (n - k);
+}
+
 // The neighbour `count` places after (forward) or before x around v,
 // cyclically. count >= 1; taken modulo the valence first, so no sum
 // overflows however large it is.
 template <class V>
-vertex<typename V::traits_type> step_from(const vertex<typename V::traits_type>& x, const V& v,
+VV_INLINE vertex<typename V::traits_type> step_from(const vertex<typename V::traits_type>& x, const V& v,
                                           unsigned long count, bool forward, const char* op, const where& w) {
   using vx = vertex<typename V::traits_type>;
   auto s = view(v, op, w);
   // A null or foreign x has slot 0, which no entry holds.
   std::int32_t pos = find(*s.nb, slot_in(x, s.ctx));
   if (pos < 0) return vx();
-  unsigned long n = s.nb->size();
-  unsigned long k = count % n;
-  unsigned long at = forward ? (static_cast<unsigned long>(pos) + k) % n : (static_cast<unsigned long>(pos) + n - k) % n;
-  return vx::from_slot(s.ctx, entry_id((*s.nb)[static_cast<std::uint32_t>(at)]));
+  return vx::from_slot(s.ctx, entry_id((*s.nb)[cyclic_step(static_cast<std::uint32_t>(pos), s.nb->size(), count, forward)]));
 }
 
 // The count of next(i)to / prev(i)to: 1 or more.
@@ -63,24 +73,24 @@ inline unsigned long step_count(long i, const char* op, const where& w) {
 //! in v's rotation, counted cyclically; null when x is not a neighbour of
 //! v. i < 1 is an error.
 template <class V, detail::if_vertex_like<V> = 0>
-vertex<typename V::traits_type> next_to(const vertex<typename V::traits_type>& x, const V& v,
+VV_INLINE vertex<typename V::traits_type> next_to(const vertex<typename V::traits_type>& x, const V& v,
                                         long i, where w = where::here()) {
   return detail::step_from(x, v, detail::step_count(i, "next(i)to", w), true, "next(i)to", w);
 }
 template <class V, detail::if_vertex_like<V> = 0>
-vertex<typename V::traits_type> next_to(const vertex<typename V::traits_type>& x, const V& v,
+VV_INLINE vertex<typename V::traits_type> next_to(const vertex<typename V::traits_type>& x, const V& v,
                                         where w = where::here()) {
   return detail::step_from(x, v, 1UL, true, "nextto", w);
 }
 
 //! `prev(i)to x in v` (i = 1: `prevto`); i < 1 is an error.
 template <class V, detail::if_vertex_like<V> = 0>
-vertex<typename V::traits_type> prev_to(const vertex<typename V::traits_type>& x, const V& v,
+VV_INLINE vertex<typename V::traits_type> prev_to(const vertex<typename V::traits_type>& x, const V& v,
                                         long i, where w = where::here()) {
   return detail::step_from(x, v, detail::step_count(i, "prev(i)to", w), false, "prev(i)to", w);
 }
 template <class V, detail::if_vertex_like<V> = 0>
-vertex<typename V::traits_type> prev_to(const vertex<typename V::traits_type>& x, const V& v,
+VV_INLINE vertex<typename V::traits_type> prev_to(const vertex<typename V::traits_type>& x, const V& v,
                                         where w = where::here()) {
   return detail::step_from(x, v, 1UL, false, "prevto", w);
 }
@@ -103,8 +113,7 @@ vertex<typename V::traits_type> beside_flag(const V& v, int step, const char* op
   auto s = view(v, op, w);
   std::int32_t f = s.nb->flag();
   if (f < 0) throw error(w, op, "no flag is set in the neighbourhood");
-  std::int32_t n = static_cast<std::int32_t>(s.nb->size());
-  std::uint32_t k = static_cast<std::uint32_t>(((f + step) % n + n) % n);
+  std::uint32_t k = cyclic_step(static_cast<std::uint32_t>(f), s.nb->size(), 1, step > 0);
   return vx::from_slot(s.ctx, entry_id((*s.nb)[k]));
 }
 }  // namespace detail

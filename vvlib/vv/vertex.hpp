@@ -2,6 +2,8 @@
 // read-only view of a vertex's synchronised (old) state.
 #pragma once
 
+#include "detail/inline.hpp"
+
 #include <cstddef>
 #include <cstdint>
 #include <functional>
@@ -144,7 +146,7 @@ class old_vertex {
  public:
   using traits_type = Tr;
 
-  old_vertex(const vertex<Tr>& v, where w) : ctx_(v.ctx()), id_(v.slot()) {
+  VV_INLINE old_vertex(const vertex<Tr>& v, where w) : ctx_(v.ctx()), id_(v.slot()) {
     if (!v) raise(w, "`", [] { return std::string("old state of the null vertex"); });
     if (ctx_->strict_old_state && !synchronised())
       raise(w, "`", [&] { return name_of(v) + " has never been synchronised (strict mode)"; });
@@ -174,12 +176,12 @@ class old_vertex {
 };
 
 template <class Tr>
-old_vertex<Tr> old(const vertex<Tr>& v, where w = where::here()) {
+VV_INLINE old_vertex<Tr> old(const vertex<Tr>& v, where w = where::here()) {
   return old_vertex<Tr>(v, w);
 }
 //! `` ``v `` is `` `v ``: the old state has no old state of its own.
 template <class Tr>
-old_vertex<Tr> old(const old_vertex<Tr>& v, where = where::here()) {
+VV_INLINE old_vertex<Tr> old(const old_vertex<Tr>& v, where = where::here()) {
   return v;
 }
 

@@ -2,6 +2,8 @@
 // operand denotes, finding a neighbour in it, and error texts.
 #pragma once
 
+#include "inline.hpp"
+
 #include <cstdint>
 #include <string>
 #include <type_traits>
@@ -30,25 +32,25 @@ struct nb_view {
 };
 
 template <class Tr>
-nb_view<Tr> view(const vertex<Tr>& v, const char* op, const where& w) {
+VV_INLINE nb_view<Tr> view(const vertex<Tr>& v, const char* op, const where& w) {
   if (!v) raise(w, op, [] { return std::string("the target is the null vertex"); });
   return {v.ctx(), &v.ctx()->nb(v.slot())};
 }
 template <class Tr>
-nb_view<Tr> view(const old_vertex<Tr>& v, const char*, const where&) noexcept {
+VV_INLINE nb_view<Tr> view(const old_vertex<Tr>& v, const char*, const where&) noexcept {
   return {v.ctx(), &v.ctx()->old_nb(v.slot())};
 }
 
 //! The vertex whose current state an edit changes (`` `v `` as an edit
 //! target means v itself).
 template <class Tr>
-const vertex<Tr>& edit_target(const vertex<Tr>& v, const char* op, const where& w) {
+VV_INLINE const vertex<Tr>& edit_target(const vertex<Tr>& v, const char* op, const where& w) {
   if (!v) raise(w, op, [] { return std::string("the target is the null vertex"); });
   v.ctx()->note_edit(v.slot(), w);
   return v;
 }
 template <class Tr>
-vertex<Tr> edit_target(const old_vertex<Tr>& v, const char*, const where& w) {
+VV_INLINE vertex<Tr> edit_target(const old_vertex<Tr>& v, const char*, const where& w) {
   v.ctx()->note_edit(v.slot(), w);
   return v.current();
 }
@@ -61,7 +63,7 @@ std::uint32_t entry_id(const record_entry<E>& e) noexcept {
 }
 
 template <class NB>
-std::int32_t find(const NB& nb, std::uint32_t id) noexcept {
+VV_INLINE std::int32_t find(const NB& nb, std::uint32_t id) noexcept {
   const auto* d = nb.data();
   for (std::uint32_t i = 0, n = nb.size(); i < n; ++i)
     if (entry_id(d[i]) == id) return static_cast<std::int32_t>(i);
@@ -71,13 +73,13 @@ std::int32_t find(const NB& nb, std::uint32_t id) noexcept {
 //! The slot a vertex operand occupies in v's context, or 0 when it is null
 //! or lives in another context (then it can be no neighbour of v).
 template <class Tr>
-std::uint32_t slot_in(const vertex<Tr>& x, const context<Tr>* ctx) noexcept {
+VV_INLINE std::uint32_t slot_in(const vertex<Tr>& x, const context<Tr>* ctx) noexcept {
   return x && x.ctx() == ctx ? x.slot() : 0u;
 }
 
 //! Checks a vertex about to be inserted into v*.
 template <class Tr, class NB>
-void check_insertable(const vertex<Tr>& x, const vertex<Tr>& v, const NB& nb, const char* op,
+VV_INLINE void check_insertable(const vertex<Tr>& x, const vertex<Tr>& v, const NB& nb, const char* op,
                       const where& w) {
   if (!x) raise(w, op, [&] { return "cannot insert the null vertex into the neighbourhood of " + name_of(v); });
   if (x.ctx() != v.ctx())

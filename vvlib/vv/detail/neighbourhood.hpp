@@ -83,6 +83,9 @@ class neighbourhood {
   neighbourhood() noexcept {
     if constexpr (moves_on_edit) set_heap(heap_rep{nullptr, 0});
   }
+  //! An empty old state that was never synchronised.
+  struct never_synchronised_tag {};
+  explicit neighbourhood(never_synchronised_tag) noexcept : neighbourhood() { flag_ = never_synchronised; }
   neighbourhood(const neighbourhood& o) : neighbourhood() {
     flag_ = o.flag_;
     assign(o.data(), o.size_);

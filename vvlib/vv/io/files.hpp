@@ -4,10 +4,13 @@
 #pragma once
 
 #include <fcntl.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include <algorithm>
 #include <cerrno>
+#include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
@@ -16,6 +19,7 @@
 #include <optional>
 #include <sstream>
 #include <string>
+#include <system_error>
 #include <vector>
 
 #include "../error.hpp"
@@ -48,23 +52,175 @@ class text_file {
   std::vector<std::size_t> line_starts_;
 };
 
-//! A whole file's bytes, or std::nullopt with the system's reason in *why
-//! ("No such file or directory").
-inline std::optional<std::string> read_file(const std::string& path, std::string* why = nullptr) {
-  errno = 0;
-  std::ifstream in(path, std::ios::binary);
-  if (in) {
-    std::ostringstream ss;
-    ss << in.rdbuf();
-    if (!in.bad()) return ss.str();
-  }
-  if (why) *why = std::strerror(errno ? errno : EIO);
-  return std::nullopt;
+//! A size limit on the files a reader takes whole: each kind of file vv
+//! reads has one, so that a wrong path (a huge file, a link to /dev/zero)
+//! fails at once with a message instead of filling the memory. The limits
+//! are listed in docs/library.md.
+struct size_limit {
+  std::uint64_t bytes;
+  const char* files;  //!< what the limit is for, in messages ("mesh files")
+};
+//! .vvm, .obj, .off, .ply and .stl files: 1 GiB (a .vvm file of ten million
+//! vertices is about 600 MB).
+inline constexpr size_limit mesh_file_limit{std::uint64_t(1) << 30, "mesh files"};
+//! The VLAB data files (functions, contours, palettes, materials): 64 MiB.
+inline constexpr size_limit data_file_limit{std::uint64_t(64) << 20, "VLAB data files"};
+//! Program text: .vvp files and the headers they include (vvc): 64 MiB.
+inline constexpr size_limit program_file_limit{std::uint64_t(64) << 20, "program files"};
+//! Anything else read whole (read_file's default): 1 GiB.
+inline constexpr size_limit any_file_limit{std::uint64_t(1) << 30, "files read whole"};
+
+namespace detail {
+
+// bytes in the largest binary unit it reaches, rounded to one decimal:
+// the value, the unit's name and its size in bytes.
+struct shown_size {
+  double value;
+  const char* unit;
+  double unit_bytes;
+};
+inline shown_size show_size(std::uint64_t bytes) {
+  static const char* const units[] = {"KiB", "MiB", "GiB", "TiB"};
+  double unit_bytes = 1024;
+  int unit = 0;
+  while (unit < 3 && static_cast<double>(bytes) >= unit_bytes * 1024) unit_bytes *= 1024, ++unit;
+  return {std::round(static_cast<double>(bytes) / unit_bytes * 10) / 10, units[unit], unit_bytes};
 }
 
-inline text_file read_text_file(const std::string& path) {
+}  // namespace detail
+
+//! A size as people read it: "312 bytes", "64 MiB", "5.2 GiB".
+inline std::string size_text(std::uint64_t bytes) {
+  if (bytes < 1024) return std::to_string(bytes) + (bytes == 1 ? " byte" : " bytes");
+  detail::shown_size s = detail::show_size(bytes);
+  char text[48];
+  bool whole = s.value == std::floor(s.value);
+  std::snprintf(text, sizeof text, whole ? "%.0f %s" : "%.1f %s", s.value, s.unit);
+  return text;
+}
+
+//! A size over a limit, so that it reads as over it: "5.2 GiB", but
+//! "1.0 GiB (1073741825 bytes)" where the rounding hides the difference.
+inline std::string size_over_text(std::uint64_t bytes, std::uint64_t limit) {
+  std::string text = size_text(bytes);
+  if (bytes >= 1024) {
+    detail::shown_size s = detail::show_size(bytes);
+    if (s.value * s.unit_bytes <= static_cast<double>(limit)) text += " (" + std::to_string(bytes) + " bytes)";
+  }
+  return text;
+}
+
+namespace detail {
+
+// What a file that is not regular is, for messages.
+inline std::string kind_of_file(mode_t mode) {
+  if (S_ISDIR(mode)) return "a folder";
+  if (S_ISFIFO(mode)) return "a FIFO (named pipe)";
+  if (S_ISCHR(mode)) return "a character device";
+  if (S_ISBLK(mode)) return "a block device";
+  if (S_ISSOCK(mode)) return "a socket";
+  return "a special file";
+}
+
+// Why a file of this status is no file to read: "" when it is a regular
+// file within the limit.
+inline std::string unreadable_because(const std::string& path, const struct stat& st, const size_limit& limit) {
+  if (S_ISREG(st.st_mode)) {
+    if (static_cast<std::uint64_t>(st.st_size) <= limit.bytes) return "";
+    return "it is " + size_over_text(static_cast<std::uint64_t>(st.st_size), limit.bytes) + ", over the " +
+           size_text(limit.bytes) + " limit of " + limit.files;
+  }
+  if (S_ISDIR(st.st_mode)) return "it is a folder, not a file";
+  // Through a link, name where it leads: "a link to /dev/zero" explains a
+  // character device that nobody meant to read.
+  struct stat link {};
+  std::string through;
+  if (::lstat(path.c_str(), &link) == 0 && S_ISLNK(link.st_mode)) {
+    std::error_code ec;
+    std::filesystem::path target = std::filesystem::canonical(path, ec);
+    if (!ec) through = "a symbolic link to " + target.string() + ", ";
+  }
+  return "it is " + through + kind_of_file(st.st_mode) + ", not a regular file";
+}
+
+}  // namespace detail
+
+//! Why path is no file to read whole, or std::nullopt when it is a regular
+//! file (after following links) within the limit. Never opens the file, so
+//! a FIFO does not block. For checks ahead of a reader that is not ours
+//! (vvc checks the headers a program includes before g++ reads them).
+inline std::optional<std::string> unreadable_file(const std::string& path,
+                                                  const size_limit& limit = any_file_limit) {
+  struct stat st {};
+  if (::stat(path.c_str(), &st) != 0) return std::string(std::strerror(errno));
+  std::string why = detail::unreadable_because(path, st, limit);
+  if (why.empty()) return std::nullopt;
+  return why;
+}
+
+//! A whole file's bytes, or std::nullopt with the reason in *why: the
+//! system's ("No such file or directory"), or that it is no regular file
+//! ("it is a FIFO (named pipe), not a regular file"; folders, devices,
+//! sockets and links to them likewise) or is over the limit ("it is 5.2
+//! GiB, over the 1 GiB limit of mesh files"). A FIFO is refused without
+//! blocking, and no more than limit.bytes are ever read, even from a file
+//! that grows or a regular file whose size the system does not know.
+inline std::optional<std::string> read_file(const std::string& path, std::string* why = nullptr,
+                                            const size_limit& limit = any_file_limit) {
+  auto refuse = [&](std::string reason) -> std::optional<std::string> {
+    if (why) *why = std::move(reason);
+    return std::nullopt;
+  };
+  // Looked at before opening: opening a FIFO for reading waits for a writer.
+  if (std::optional<std::string> problem = unreadable_file(path, limit)) return refuse(*problem);
+  // Non-blocking all the same, in case the path was replaced since; fstat
+  // then says what was opened.
+  int fd = ::open(path.c_str(), O_RDONLY | O_NONBLOCK | O_CLOEXEC);
+  if (fd < 0) return refuse(std::strerror(errno));
+  struct stat st {};
+  std::string problem = ::fstat(fd, &st) != 0 ? std::string(std::strerror(errno))
+                                               : detail::unreadable_because(path, st, limit);
+  if (!problem.empty()) {
+    ::close(fd);
+    return refuse(problem);
+  }
+  std::string bytes;
+  // One byte more than the size, to see the end at once; files that report
+  // no size (under /proc) grow the buffer as they are read.
+  bytes.resize(static_cast<std::size_t>(st.st_size) + 1);
+  std::size_t have = 0;
+  while (true) {
+    if (have == bytes.size()) {
+      if (have > limit.bytes) {
+        ::close(fd);
+        return refuse("it is over the " + size_text(limit.bytes) + " limit of " + limit.files +
+                      " (it grew while being read)");
+      }
+      bytes.resize(std::min<std::uint64_t>(std::max<std::size_t>(2 * have, 4096), limit.bytes + 1));
+    }
+    ssize_t n = ::read(fd, &bytes[have], bytes.size() - have);
+    if (n < 0 && errno == EINTR) continue;
+    if (n < 0) {
+      int e = errno;
+      ::close(fd);
+      return refuse(std::strerror(e));
+    }
+    if (n == 0) break;
+    have += static_cast<std::size_t>(n);
+  }
+  ::close(fd);
+  if (have > limit.bytes)
+    return refuse("it is over the " + size_text(limit.bytes) + " limit of " + limit.files +
+                  " (it grew while being read)");
+  bytes.resize(have);
+  return bytes;
+}
+
+//! A file's text for a reader that reports by line (see read_file for
+//! what is refused); vv::error "path: cannot open file: why" otherwise.
+inline text_file read_text_file(const std::string& path, const size_limit& limit = any_file_limit) {
   std::string why;
-  std::optional<std::string> text = read_file(path, &why);
+  std::optional<std::string> text = read_file(path, &why, limit);
   if (!text) throw error(path, 0, "cannot open file: " + why);
   return text_file(path, std::move(*text));
 }

@@ -16,31 +16,38 @@
 
 #include "../edits.hpp"
 #include "../mesh.hpp"
+#include "face_check.hpp"
 #include "positions.hpp"
 
 namespace vv {
 
 //! Replaces the contents of m by the polygon mesh (positions go to the
-//! `pos` property when there is one). `source` names the input in errors.
+//! `pos` property when there is one). `source` names the input in errors;
+//! w is where the edits are noted (vvinterpreter --check names that line),
+//! the caller's line by default.
 template <class Tr>
 void build_from_faces(mesh<Tr>& m, const std::vector<std::array<double, 3>>& points,
                       const std::vector<std::vector<std::uint32_t>>& faces,
-                      const std::string& source) {
+                      const std::string& source, where w = where::here()) {
   context<Tr>* ctx = m.ctx();
   if (!ctx) throw error(source, 0, "the mesh has no context to create vertices in");
   const std::size_t n = points.size();
   // Links around each vertex b, stored contiguously (CSR): (c, a) means
   // "c comes right before a around b".
   std::vector<std::size_t> first(n + 1, 0);
+  constexpr std::size_t unseen = std::numeric_limits<std::size_t>::max();
+  std::vector<std::size_t> seen_in_face(n, unseen);  // the last face that listed each vertex
   for (std::size_t f = 0; f < faces.size(); ++f) {
     const auto& face = faces[f];
-    const std::size_t k = face.size();
-    for (std::size_t i = 0; i < k; ++i) {
-      std::uint32_t a = face[(i + k - 1) % k], b = face[i], c = face[(i + 1) % k];
-      if (a >= n || b >= n || c >= n)
-        throw error(source, 0, "face " + std::to_string(f) + " uses a vertex that does not exist");
-      if (a == b || b == c || a == c)
-        throw error(source, 0, "face " + std::to_string(f) + " repeats a vertex");
+    auto fail = [&](const std::string& problem) {
+      throw error(source, 0, "face " + std::to_string(f) + ": " + problem);
+    };
+    std::string few = io::too_few_corners(face.size());
+    if (!few.empty()) fail(few);
+    for (std::uint32_t b : face) {
+      if (b >= n) fail(io::missing_vertex_problem(b, n, 0));
+      if (seen_in_face[b] == f) fail("the face lists vertex " + std::to_string(b) + " twice");
+      seen_in_face[b] = f;
       ++first[b + 1];
     }
   }
@@ -118,8 +125,8 @@ void build_from_faces(mesh<Tr>& m, const std::vector<std::array<double, 3>>& poi
   for (std::size_t i = 0; i < n; ++i) {
     list.clear();
     for (std::uint32_t j : rotation[i]) list.push_back(created[j]);
-    make_nb_from(created[i], list);
-    fresh.add(created[i]);
+    make_nb_from(created[i], list, w);
+    fresh.add(created[i], w);
   }
   static_cast<typename Tr::mesh_props&>(fresh) = static_cast<const typename Tr::mesh_props&>(m);
   m = std::move(fresh);

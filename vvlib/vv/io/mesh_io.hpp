@@ -32,13 +32,17 @@ struct export_options {
 };
 
 //! Replaces m by the mesh in a file; m is unchanged on failure. What a
-//! .vvm file let through without a word is added to notes when given.
+//! .vvm file let through without a word is added to notes when given. The
+//! edits are noted at w (vvinterpreter --check names that line). A path
+//! that is no regular file, or a file over io::mesh_file_limit, is refused
+//! unread.
 template <class Tr>
-void read_mesh(mesh<Tr>& m, const std::string& path, detail::vvm_notes* notes = nullptr) {
+void read_mesh(mesh<Tr>& m, const std::string& path, detail::vvm_notes* notes = nullptr,
+               where w = where::here()) {
   std::string ext = io::extension_of(path);
-  if (ext == ".vvm") return read_vvm(m, path, notes);
+  if (ext == ".vvm") return read_vvm(m, path, notes, w);
   polygon_soup soup = read_polygon_file(path);
-  build_from_faces(m, soup.points, soup.faces, path);
+  build_from_faces(m, soup.points, soup.faces, path, w);
 }
 
 //! Writes m to a file, atomically; nothing is written on failure.
@@ -70,7 +74,7 @@ template <class Tr>
 void mesh<Tr>::readFile(const std::string& path, where w) {
   detail::vvm_notes notes;
   at_caller(w, "readFile",
-            [&] { read_mesh(*this, io::resolve(ctx_ ? ctx_->base_dir : std::string(), path), &notes); });
+            [&] { read_mesh(*this, io::resolve(ctx_ ? ctx_->base_dir : std::string(), path), &notes, w); });
   detail::say_notes(*ctx_, notes, w);
 }
 

@@ -23,7 +23,9 @@ struct polygon_soup {
 };
 
 //! Reads a polygon file (.obj .off .ply .stl by extension); vv::error
-//! naming the file when it is missing, unreadable or malformed.
+//! naming the file when it is missing, unreadable or malformed (with the
+//! line and the reason in OBJ, OFF, ASCII STL and the PLY header), and
+//! when it is no regular file or is over io::mesh_file_limit.
 VV_FORMATS_API polygon_soup read_polygon_file(const std::string& path);
 
 //! Writes a polygon file (.obj .off .ply .stl by extension), atomically:

@@ -10,12 +10,14 @@
 
 #include <cstdint>
 #include <cstring>
+#include <filesystem>
 #include <functional>
 #include <limits>
 #include <map>
 #include <set>
 #include <sstream>
 #include <string>
+#include <system_error>
 #include <vector>
 
 #include <pugixml.hpp>
@@ -51,6 +53,9 @@ bool set_field(P& props, const char* name, const char* text, Fail&& fail) {
 struct vvm_notes {
   std::vector<std::pair<std::string, std::string>> said;  // key, message
   std::set<std::string> keys;
+  // The file's one name in keys (links and ".." resolved), so that a file
+  // read under two spellings still warns once.
+  std::string file;
   void add(std::string key, std::string message) {
     if (keys.insert(key).second) said.emplace_back(std::move(key), std::move(message));
   }
@@ -77,14 +82,15 @@ void set_fields_from(P& props, const pugi::xml_node& node, const io::text_file& 
       ++given[a.name()];
       continue;
     }
-    notes.add(file.name() + "|unknown|" + element + "|" + a.name(),
+    notes.add(notes.file + "|unknown|" + element + "|" + a.name(),
               file.name() + ":" + std::to_string(file.line_at(node.offset_debug())) +
                   ": warning: the attribute " + a.name() + " of <" + element +
                   "> matches no field of the program's " + kind_of(element) + " and is ignored");
   }
 }
 
-// A field of P that fewer than `of` elements gave keeps its default there.
+// A field of P that fewer than `of` elements gave keeps its default there
+// (said unless the program computes the field itself).
 template <class P>
 void note_missing_fields(const io::text_file& file, const char* what, const char* plural,
                          const std::map<std::string, std::size_t>& given, std::size_t of,
@@ -94,13 +100,13 @@ void note_missing_fields(const io::text_file& file, const char* what, const char
   for_each_field(probe, [&](const char* field, const auto&) {
     auto it = given.find(field);
     std::size_t n = it == given.end() ? 0 : it->second;
-    if (n == of) return;
+    if (n == of || is_computed_field<P>(field)) return;
     std::string head = file.name() + ": warning: the " + what + " field " + field;
     std::string tail = n == 0 ? (of == 1 ? " is not in the file and keeps its default value"
                                          : " is in no " + std::string(what) + " of the file and keeps its default value")
                               : " is missing from " + std::to_string(of - n) + " of the " + std::to_string(of) +
                                     " " + plural + ", which keep its default value";
-    notes.add(file.name() + "|missing|" + what + "|" + field, head + tail);
+    notes.add(notes.file + "|missing|" + what + "|" + field, head + tail);
   });
 }
 
@@ -291,8 +297,9 @@ void read_vvm_records(vvm_contents<Tr>& c, const std::vector<pugi::xml_node>& es
 }
 
 // Build: create the vertices in file order and swap the new contents into m.
+// The edits are noted at w, the line that read the file.
 template <class Tr>
-void build_vvm_mesh(mesh<Tr>& m, const vvm_contents<Tr>& c) {
+void build_vvm_mesh(mesh<Tr>& m, const vvm_contents<Tr>& c, const where& w) {
   context<Tr>& ctx = *m.ctx();
   const std::size_t count = c.props.size();
   mesh<Tr> fresh(ctx);
@@ -304,12 +311,12 @@ void build_vvm_mesh(mesh<Tr>& m, const vvm_contents<Tr>& c) {
   for (std::size_t i = 0; i < count; ++i) {
     list.clear();
     for (std::uint32_t j : c.nbs[i]) list.push_back(created[j]);
-    make_nb_from(created[i], list);
-    fresh.add(created[i]);
+    make_nb_from(created[i], list, w);
+    fresh.add(created[i], w);
   }
   for (const auto& r : c.records) {
-    edge(created[r.first], created[r.second]) = r.value;
-    if (r.symmetric) edge(created[r.second], created[r.first]) = r.value;
+    edge(created[r.first], created[r.second], w) = r.value;
+    if (r.symmetric) edge(created[r.second], created[r.first], w) = r.value;
   }
   m = std::move(fresh);
 }
@@ -320,13 +327,19 @@ void build_vvm_mesh(mesh<Tr>& m, const vvm_contents<Tr>& c) {
 //! used in error messages). New vertices are created in file order.
 //! What the file let through without a word is added to notes when given.
 //! The whole file is validated, read and checked before the mesh changes.
+//! w is where the edits are noted (vvinterpreter --check names that line):
+//! the caller's line by default.
 template <class Tr>
-void parse_vvm(mesh<Tr>& m, const io::text_file& file, detail::vvm_notes* notes = nullptr) {
+void parse_vvm(mesh<Tr>& m, const io::text_file& file, detail::vvm_notes* notes = nullptr,
+               where w = where::here()) {
   detail::vvm_notes ignored;
   detail::vvm_notes& said = notes ? *notes : ignored;
   if (!m.ctx())
     throw error(file.name(), 0,
                 "the mesh has no context to create vertices in (construct it with mesh(context))");
+  std::error_code ec;
+  std::filesystem::path one_name = std::filesystem::weakly_canonical(file.name(), ec);
+  said.file = ec ? file.name() : one_name.string();
   pugi::xml_document doc;
   pugi::xml_node root = detail::vvm_root(doc, file);
 
@@ -341,13 +354,15 @@ void parse_vvm(mesh<Tr>& m, const io::text_file& file, detail::vvm_notes* notes 
   detail::note_missing_fields<typename Tr::mesh_props>(file, "mesh", "meshes", mesh_given, 1, said);
   detail::note_missing_fields<typename Tr::vertex_props>(file, "vertex", "vertices", vertex_given,
                                                          contents.props.size(), said);
-  detail::build_vvm_mesh(m, contents);
+  detail::build_vvm_mesh(m, contents, w);
 }
 
-//! Reads a .vvm file into m (see parse_vvm).
+//! Reads a .vvm file into m (see parse_vvm). A path that is no regular
+//! file, or a file over io::mesh_file_limit, is refused unread.
 template <class Tr>
-void read_vvm(mesh<Tr>& m, const std::string& path, detail::vvm_notes* notes = nullptr) {
-  parse_vvm(m, io::read_text_file(path), notes);
+void read_vvm(mesh<Tr>& m, const std::string& path, detail::vvm_notes* notes = nullptr,
+              where w = where::here()) {
+  parse_vvm(m, io::read_text_file(path, io::mesh_file_limit), notes, w);
 }
 
 //! The .vvm text of a mesh.
@@ -423,7 +438,7 @@ template <class Tr>
 void mesh<Tr>::readXMLFile(const std::string& path, where w) {
   detail::vvm_notes notes;
   at_caller(w, "readXMLFile",
-            [&] { read_vvm(*this, io::resolve(ctx_ ? ctx_->base_dir : std::string(), path), &notes); });
+            [&] { read_vvm(*this, io::resolve(ctx_ ? ctx_->base_dir : std::string(), path), &notes, w); });
   detail::say_notes(*ctx_, notes, w);
 }
 
