@@ -87,7 +87,50 @@ class emitter {
         w_.text("static void vv_block_" + std::string(it.block_name->text) + "()");
         emit(*it.block_body);
         break;
+      case top_item::action: {
+        const action_block& a = p_.actions[it.action_index];
+        w_.at(*a.keyword);
+        w_.text("static void vv_action_" + std::to_string(it.action_index) + "()");
+        emit(*a.body);
+        break;
+      }
+      case top_item::pick:
+        w_.at(*p_.pick->keyword);
+        w_.text("static void vv_pick_block(vertex");
+        w_.token(*p_.pick->name);
+        w_.text(")");
+        emit(*p_.pick->body);
+        break;
     }
+  }
+
+  // The actions (vv_plugin::actions): an entry point per action, then the
+  // table of name, key, line and entry point.
+  std::string action_table() const {
+    if (p_.actions.empty()) return "";
+    std::string s, table = "static const vv_action_entry vv_action_table[] = {\n";
+    for (std::size_t i = 0; i < p_.actions.size(); ++i) {
+      const action_block& a = p_.actions[i];
+      const std::string n = std::to_string(i);
+      s += "static const char* vv_entry_action_" + n + "() { return vv::plugin::guarded(vv_exchange, vv_action_" +
+           n + "); }\n";
+      const std::string key = a.key_char ? "'" + std::string(1, a.key_char) + "'" : std::string("0");
+      table += "    {" + std::string(a.name->text) + ", " + key + ", " + std::to_string(a.keyword->line) +
+               ", vv_entry_action_" + n + "},\n";
+    }
+    return s + table + "};\n";
+  }
+
+  // The pick block's entry point (vv_plugin::pick): the vertex by its label
+  // in the global meshes.
+  std::string pick_entry_point() const {
+    if (!p_.pick) return "";
+    if (p_.global_meshes.empty())
+      return "static const char* vv_entry_pick(unsigned) {\n"
+             "  (void)vv_pick_block;\n"
+             "  return \"the model has no global mesh to pick a vertex from\";\n}\n";
+    return "static const char* vv_entry_pick(unsigned vv_label) {\n"
+           "  return vv::plugin::pick(vv_exchange, vv_named_meshes, vv_label, vv_pick_block);\n}\n";
   }
 
   // `param double rate = 0.5 in [0, 1];` -> an ordinary global, and its
@@ -186,28 +229,35 @@ class emitter {
     w_.generated(s);
   }
 
-  // The plugin descriptor (vv/plugin/plugin.hpp): the functions it points
-  // to, then the one exported object, its members in the header's order.
+  // The plugin descriptor (model/abi.hpp): the functions it points to,
+  // then the one exported object, filled member by member by name (members
+  // left out are NULL or 0). The object is constexpr: constant-initialised,
+  // ready before any of the program's globals, or the model does not compile.
   void entry_points() {
-    std::string s = "\n// ---- the plugin descriptor (vv/plugin/plugin.hpp) ----\n";
+    std::string s = "\n// ---- the plugin descriptor (model/abi.hpp) ----\n";
     s += "static void vv_entry_configure(const vv_plugin_settings* vv_settings) {\n"
          "  vv::plugin::configure(vv_model, *vv_settings, " + cpp_string_literal(o_.source_dir) + ");\n}\n";
-    // vv_plugin's block members, in the order of the word table's execution
-    // blocks (vv/plugin/plugin.hpp declares them in that order); NULL for a
-    // block the program lacks.
-    std::string blocks;
+    std::string members = "  vv_plugin vv_d{};\n  vv_d.abi_version = VV_PLUGIN_ABI_VERSION;\n";
+    auto member = [&members](const std::string& name, const std::string& value) {
+      members += "  vv_d." + name + " = " + value + ";\n";
+    };
     for (std::string_view name_view : execution_block_names()) {
       std::string name(name_view);
       bool has = false;
       for (const top_item& it : p_.items) has = has || (it.kind == top_item::block && it.block_name->text == name);
-      if (has)
-        s += std::string("static const char* vv_entry_") + name + "() { return vv::plugin::guarded(vv_exchange, vv_block_" +
-             name + "); }\n";
-      blocks += std::string("    ") + (has ? std::string("vv_entry_") + name : std::string("nullptr")) + ",  // " + name + "\n";
+      if (!has) continue;
+      s += "static const char* vv_entry_" + name + "() { return vv::plugin::guarded(vv_exchange, vv_block_" +
+           name + "); }\n";
+      member(name, "vv_entry_" + name);
     }
     s += "static const char* vv_entry_reread() {\n"
          "  return vv::plugin::guarded(vv_exchange, [] { vv_model.host().reread_files(); });\n}\n";
-    s += "static vv::proxy* vv_entry_proxy() { return &vv_model.host(); }\n";
+    s += "static void vv_entry_run_settings(vv_run_settings* vv_out) {\n"
+         "  vv::plugin::run_settings(vv_model.host(), vv_out);\n}\n";
+    s += "static void vv_entry_set_plot_step(unsigned vv_step) { vv_model.host().plot_step = vv_step; }\n";
+    s += "static std::size_t vv_entry_plot_count() { return vv_model.host().plots.size(); }\n";
+    s += "static void vv_entry_plot_series(std::size_t vv_i, vv_plot_series* vv_out) {\n"
+         "  vv::plugin::plot_series_of(vv_model.host(), vv_i, vv_out);\n}\n";
     s += "static const char* vv_entry_file_objects() {\n"
          "  return vv::plugin::file_object_paths(vv_exchange, vv_model.host());\n}\n";
     s += "static const void* const* vv_entry_error_frames(std::size_t* vv_count) {\n"
@@ -216,22 +266,30 @@ class emitter {
     s += mesh_table();
     s += parameter_table();
     s += mesh_set_entry_points();
-    const std::string meshes = std::to_string(p_.global_meshes.size());
-    const std::string params = std::to_string(p_.parameters.size());
-    s += "VV_PLUGIN_EXPORT const vv_plugin vv_plugin_descriptor = {\n"
-         "    VV_PLUGIN_ABI_VERSION,\n" + blocks +
-         "    " + (p_.global_meshes.empty() ? std::string("nullptr") : std::string("vv_mesh_table")) + ", " + meshes + ",\n"
-         "    " + (p_.parameters.empty() ? std::string("nullptr") : std::string("vv_param_table")) + ", " + params + ",\n"
-         "    vv_entry_configure,\n"
-         "    vv_entry_reread,\n"
-         "    vv_entry_proxy,\n"
-         "    vv_entry_union_vvm,\n"
-         "    vv_entry_union_geometry,\n"
-         "    vv_entry_check,\n"
-         "    vv_entry_describe_vertex,\n"
-         "    vv_entry_file_objects,\n"
-         "    vv_entry_error_frames,\n"
-         "};\n";
+    s += action_table();
+    s += pick_entry_point();
+    if (!p_.actions.empty()) {
+      member("actions", "vv_action_table");
+      member("action_count", std::to_string(p_.actions.size()));
+    }
+    if (p_.pick) {
+      member("pick", "vv_entry_pick");
+      member("pick_line", std::to_string(p_.pick->keyword->line));
+    }
+    if (!p_.global_meshes.empty()) {
+      member("meshes", "vv_mesh_table");
+      member("mesh_count", std::to_string(p_.global_meshes.size()));
+    }
+    if (!p_.parameters.empty()) {
+      member("params", "vv_param_table");
+      member("param_count", std::to_string(p_.parameters.size()));
+    }
+    for (const char* name : {"configure", "reread", "run_settings", "set_plot_step", "plot_count", "plot_series",
+                             "union_vvm", "union_geometry", "check", "describe_vertex", "file_objects",
+                             "error_frames"})
+      member(name, std::string("vv_entry_") + name);
+    s += "static constexpr vv_plugin vv_descriptor() {\n" + members + "  return vv_d;\n}\n";
+    s += "VV_PLUGIN_EXPORT constexpr vv_plugin vv_plugin_descriptor = vv_descriptor();\n";
     w_.generated(s);
   }
 

@@ -17,6 +17,9 @@ enum class word_role {
   property_block,   // edge { }, vertex { }, mesh { } (in this order)
   execution_block,  // start { }, step { }, ... (the plugin's blocks, in this order)
   parameter,        // param TYPE NAME = VALUE;
+  action,           // action "NAME" [key 'c'] { }: before a string, at top level
+  action_key,       // key 'c', after an action's name
+  pick,             // pick (vertex v) { }: before '(', at top level
   path_step,        // next, prev, swap between @( ... ) and @
 };
 

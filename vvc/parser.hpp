@@ -157,6 +157,10 @@ class parser {
   void parse_top_declaration(program& p);
   bool starts_parameter() const;
   void parse_parameter(program& p);
+  bool starts_action() const;
+  void parse_action(program& p);
+  bool starts_pick() const;
+  void parse_pick(program& p);
   void analyse_fields(property_block& block);
   void add_field(property_block& block, std::size_t first, std::size_t last, bool first_declarator,
                  bool& type_has_handle);

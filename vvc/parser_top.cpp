@@ -1,10 +1,16 @@
-// The top level: property blocks, execution blocks, C++ declarations.
+// The top level: property blocks, execution blocks, actions and the pick
+// block, parameters, C++ declarations.
+#include <cctype>
+
+#include <model/viewer_keys.hpp>
+
 #include "parser.hpp"
 #include "keywords.hpp"
 
 namespace vvc {
 
-// program = { preprocessor-line | property-block | execution-block | parameter | declaration }
+// program = { preprocessor-line | property-block | execution-block | action | pick
+//           | parameter | declaration }
 program parser::parse_program() {
   program p;
   while (!at_end() && !diag_.saturated()) {
@@ -18,6 +24,10 @@ program parser::parse_program() {
       parse_property_block(p);
     } else if (t.is_identifier() && has_role(t.text, word_role::execution_block) && peek(1).is("{")) {
       parse_execution_block(p);
+    } else if (starts_action()) {
+      parse_action(p);
+    } else if (starts_pick()) {
+      parse_pick(p);
     } else if (starts_parameter()) {
       parse_parameter(p);
     } else if (t.is(")") || t.is("]") || t.is("}")) {
@@ -135,6 +145,125 @@ void parser::parse_parameter(program& p) {
   item.tok = d.keyword;
   item.parameter_index = p.parameters.size();
   p.parameters.push_back(std::move(d));
+  p.items.push_back(std::move(item));
+}
+
+namespace {
+
+// An action's name is shown on a button, typed after `action` in a script
+// and written into a session's event log, one line each: plain printable
+// text, no escapes, no spaces at its ends. "" when the literal is one.
+std::string action_name_problem(std::string_view literal) {
+  if (literal.size() < 2 || literal.front() != '"' || literal.back() != '"')
+    return "an action's name is a plain string literal (no prefix, not raw): action \"NAME\" { ... }";
+  std::string_view name = literal.substr(1, literal.size() - 2);
+  if (name.empty()) return "an action's name must not be empty";
+  for (char c : name) {
+    if (c == '\\') return "an action's name is plain text, without escapes";
+    if (static_cast<unsigned char>(c) < 0x20 || c == 0x7f) return "an action's name is one line of printable text";
+  }
+  if (name.front() == ' ' || name.back() == ' ') return "an action's name must not begin or end with a space";
+  return "";
+}
+
+// 'g' -> 'g', 'G' -> 'g', '7' -> '7'; 0 for anything else.
+char action_key_char(std::string_view literal) {
+  if (literal.size() != 3 || literal.front() != '\'' || literal.back() != '\'') return 0;
+  const unsigned char c = static_cast<unsigned char>(literal[1]);
+  if (c >= 0x80 || !std::isalnum(c)) return 0;
+  return static_cast<char>(std::tolower(c));
+}
+
+}  // namespace
+
+// `action` is a word of ours only at the top level and before a string.
+bool parser::starts_action() const {
+  return peek().is_identifier() && has_role(peek().text, word_role::action) && peek(1).kind == tok::string;
+}
+
+// action = "action" string ["key" character] compound
+// Names are unique; a key belongs to one action and is none of the viewer's.
+void parser::parse_action(program& p) {
+  action_block a;
+  a.keyword = take();
+  a.name = take();
+  const std::string name(a.name->text);
+  if (std::string why = action_name_problem(a.name->text); !why.empty()) error(*a.name, why);
+  for (const action_block& other : p.actions)
+    if (other.name->text == a.name->text)
+      error(*a.name, "a second action " + name + " (the first is at line " + std::to_string(other.name->line) + ")");
+  if (peek().is_identifier() && has_role(peek().text, word_role::action_key)) {
+    take();
+    if (peek().kind != tok::character) {
+      error(peek(), "expected the key as a character after 'key', as in key 'g', found " + found(peek()));
+    } else {
+      a.key = take();
+      a.key_char = action_key_char(a.key->text);
+      const std::string key(a.key->text);
+      if (!a.key_char) {
+        error(*a.key, "the key of action " + name + " must be one letter or digit, as in key 'g'; found " + key);
+      } else if (const vv::model::viewer_key* v = vv::model::find_viewer_key(a.key_char)) {
+        error(*a.key, "the key " + key + " of action " + name + " is the viewer's key for " + v->does +
+                          "; choose another");
+      } else {
+        for (const action_block& other : p.actions)
+          if (other.key_char == a.key_char)
+            error(*a.key, "the key " + key + " of action " + name + " is already the key of action " +
+                              std::string(other.name->text) + " (line " + std::to_string(other.key->line) + ")");
+      }
+    }
+  }
+  if (!at("{")) {
+    error(peek(), "expected '{' to begin the block of action " + name + ", found " + found(peek()));
+    recover();
+    return;
+  }
+  a.body = parse_compound();
+  top_item item;
+  item.kind = top_item::action;
+  item.tok = a.keyword;
+  item.action_index = p.actions.size();
+  p.actions.push_back(std::move(a));
+  p.items.push_back(std::move(item));
+}
+
+// `pick` is a word of ours only at the top level and before '('.
+bool parser::starts_pick() const {
+  return peek().is_identifier() && has_role(peek().text, word_role::pick) && peek(1).is("(");
+}
+
+// pick = "pick" "(" "vertex" name ")" compound, at most once.
+void parser::parse_pick(program& p) {
+  auto b = std::make_unique<pick_block>();
+  b->keyword = take();
+  if (p.pick)
+    error(*b->keyword, "a second pick block (the first is at line " + std::to_string(p.pick->keyword->line) + ")");
+  take();  // (
+  if (!peek().is_word("vertex") || !peek(1).is_identifier() || !peek(2).is(")")) {
+    error(peek(), "expected 'vertex NAME' in the pick block's parentheses, as in pick (vertex v) { ... }, found " +
+                      found(peek()));
+    // Skip to the parameter list's end, then read the block if it is there.
+    while (!at_end() && !at(")") && !at("{")) take();
+    accept(")");
+    if (at("{")) parse_compound();
+    return;
+  }
+  b->vertex = take();
+  // Like a global declaration, it uses the word: the vertex block must come first.
+  if (!first_use_[1]) first_use_[1] = b->vertex;
+  b->name = take();
+  take();  // )
+  if (!at("{")) {
+    error(peek(), "expected '{' to begin the pick block, found " + found(peek()));
+    recover();
+    return;
+  }
+  b->body = parse_compound();
+  if (p.pick) return;  // reported above
+  p.pick = std::move(b);
+  top_item item;
+  item.kind = top_item::pick;
+  item.tok = p.pick->keyword;
   p.items.push_back(std::move(item));
 }
 

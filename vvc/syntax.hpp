@@ -149,10 +149,28 @@ struct parameter {
   pieces value, lo, hi;          // lo and hi empty: no range
 };
 
+//! `action "NAME" [key 'c'] { ... }`: a block the user runs by name.
+struct action_block {
+  const token* keyword = nullptr;
+  const token* name = nullptr;  // the string literal, quotes included
+  const token* key = nullptr;   // the character literal, or null
+  char key_char = 0;            // the key as the viewer reads it (lowercase), or 0
+  stmt_ptr body;
+};
+
+//! `pick (vertex v) { ... }`: run with the vertex the user picks.
+struct pick_block {
+  const token* keyword = nullptr;
+  const token* vertex = nullptr;  // the parameter's type word
+  const token* name = nullptr;    // the parameter
+  stmt_ptr body;
+};
+
 //! The top level of a program, in source order.
 struct top_item {
-  enum kind_t { declaration, property, block, preproc, parameter } kind = declaration;
+  enum kind_t { declaration, property, block, preproc, parameter, action, pick } kind = declaration;
   std::size_t parameter_index = 0;
+  std::size_t action_index = 0;
   pieces cxx;              // a declaration, with any bodies inside
   std::size_t property_index = 0;
   const token* block_name = nullptr;  // execution block
@@ -169,6 +187,8 @@ struct program {
   std::size_t last_property_item = 0;      // index into items; items.size() if none
   std::vector<const token*> global_meshes; // names of top-level `mesh` variables
   std::vector<parameter> parameters;       // `param` globals, in source order
+  std::vector<action_block> actions;       // in source order
+  std::unique_ptr<pick_block> pick;        // null: the program has none
 };
 
 }  // namespace vvc

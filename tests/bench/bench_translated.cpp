@@ -16,7 +16,7 @@
 #include <util/point.hpp>
 #include <vv/io/from_faces.hpp>
 #include <vv/io/vvm.hpp>
-#include <vv/plugin/plugin.hpp>
+#include <model/abi.hpp>
 #include <vv/vv.hpp>
 
 namespace {
@@ -87,7 +87,9 @@ bool read_all(int fd, void* data, std::size_t size)
       if (std::strcmp(plugin->meshes[i].name, "S") == 0) mesh = &plugin->meshes[i];
     if (!mesh) return void(problem = model.plugin + " has no global mesh S");
 
-    const vv_plugin_settings settings{model_dir.c_str(), 1, 0, 0};
+    vv_plugin_settings settings{};
+    settings.model_dir = model_dir.c_str();
+    settings.seed = 1;
     plugin->configure(&settings);
     if (const char* e = plugin->start()) return void(problem = e);
     const stopwatch timer;

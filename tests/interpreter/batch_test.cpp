@@ -15,7 +15,7 @@
 
 #include <vv/vv.hpp>
 #include <vv/io/mesh_io.hpp>
-#include <vv/plugin/plugin.hpp>
+#include <model/abi.hpp>
 
 #include <util/point.hpp>
 

@@ -275,7 +275,7 @@ void model_controller::write_out(const command& c) {
   if (c.kind == command::export_mesh) {
     e = c.name.empty() ? runner_.export_to(c.path) : runner_.export_to(c.path, comma_list(c.name));
   } else if (c.kind == command::plots) {
-    e = write_plots(c.path, runner_.model()->proxy());
+    e = write_plots(c.path, runner_.model()->plots());
   } else if (c.kind == command::save_session) {
     std::string text = "# vv session of " + o_.model + ": vvinterpreter --batch --replay FILE MODEL runs it\n" +
                        log_.text();

@@ -263,8 +263,9 @@ int colour_bar_strip(session* model, const mesh_drawing* fallback, int width) {
 
 box view_box(session* model, const mesh_drawing* drawing) {
   box b;
-  if (model && model->proxy().has_view_volume) {
-    const vv::proxy& p = model->proxy();
+  vv_run_settings p{};
+  if (model) p = model->run_settings();
+  if (p.has_view_volume) {
     b.add({p.view_min[0], p.view_min[1], p.view_min[2]});
     b.add({p.view_max[0], p.view_max[1], p.view_max[2]});
   } else if (drawing && !drawing->bounds().empty) {

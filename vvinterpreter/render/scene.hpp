@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include <vv/plugin/plugin.hpp>
+#include <model/abi.hpp>
 
 #include "render/camera.hpp"
 #include "render/colour_bar.hpp"

@@ -45,11 +45,14 @@ bool is_model_source(const std::string& file) {
   return file.size() > 4 && file.compare(file.size() - 4, 4, ".vvp") == 0;
 }
 
-// vvc names block bodies vv_block_NAME; the compiler names the code that
-// initialises globals after the file.
+// vvc names block bodies vv_block_NAME, actions vv_action_N (the report's
+// first line names the action) and the pick block vv_pick_block; the
+// compiler names the code that initialises globals after the file.
 std::string readable_function(const std::string& f) {
   const std::string block = "vv_block_";
   if (f.rfind(block, 0) == 0) return "the " + f.substr(block.size(), f.find('(') - block.size()) + " block";
+  if (f.rfind("vv_action_", 0) == 0) return "an action's block";
+  if (f.rfind("vv_pick_block", 0) == 0) return "the pick block";
   if (f.rfind("_GLOBAL__sub_I", 0) == 0 || f.rfind("__static_initialization_and_destruction", 0) == 0)
     return "a global initialiser";
   return f;
@@ -148,6 +151,8 @@ std::string activity_name(const child_activity& a) {
   if (a.what == "loading") return "loading the model (its global initialisers)";
   if (a.what == "replay") return "running again to step " + std::to_string(a.step);
   if (a.what.rfind("render", 0) == 0) return "drawing (" + a.what + ")";
+  // `action "Grow"`, `pick of vertex 12` (session::run_action, run_pick)
+  if (a.what.rfind("action ", 0) == 0 || a.what.rfind("pick ", 0) == 0) return a.what;
   if (a.what.empty()) return "the model";
   return "the " + a.what + " block";
 }

@@ -30,7 +30,7 @@ namespace {
 
 // Everything the signal handler touches is static: it may not allocate.
 int report = -1;
-char activity[32] = "";
+char activity[128] = "";  // room for an action's name
 unsigned activity_step = 0;
 // The thread of the announced activity (0: none): the one a sample is of.
 volatile pid_t activity_thread = 0;

@@ -5,7 +5,7 @@
 
 #include <cstddef>
 
-#include <vv/plugin/plugin.hpp>
+#include <model/abi.hpp>
 
 namespace vvi {
 

@@ -4,7 +4,7 @@
 
 #include <string>
 
-#include <vv/plugin/plugin.hpp>
+#include <model/abi.hpp>
 
 namespace vvi {
 

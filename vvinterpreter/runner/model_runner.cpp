@@ -100,6 +100,27 @@ bool model_runner::reread() {
   return false;
 }
 
+bool model_runner::run_action(const std::string& name) {
+  if (!model_) {
+    error_ = "no model is loaded";
+    return false;
+  }
+  if (model_->run_action(name)) return true;
+  // An unknown name is the user's mistake, not the program's: name the model.
+  error_ = model_->action(name) ? model_->error() : o_.model + ": " + model_->error();
+  return false;
+}
+
+bool model_runner::run_pick(unsigned label) {
+  if (!model_) {
+    error_ = "no model is loaded";
+    return false;
+  }
+  if (model_->run_pick(label)) return true;
+  error_ = model_->model().pick ? model_->error() : o_.model + ": " + model_->error();
+  return false;
+}
+
 void model_runner::close() {
   if (!model_) return;
   model_->close();
@@ -108,7 +129,7 @@ void model_runner::close() {
 }
 
 std::size_t model_runner::max_face() const {
-  return o_.max_face ? o_.max_face : model_ ? model_->proxy().max_face : 0;
+  return o_.max_face ? o_.max_face : model_ ? model_->run_settings().max_face : 0;
 }
 
 namespace {

@@ -40,6 +40,11 @@ class model_runner {
   bool step();
   bool end();
   bool reread();
+  //! The program's action of this name, or its pick block with the vertex
+  //! of this label: supervised and reported like a step (error() names the
+  //! .vvp line), without advancing the step count.
+  bool run_action(const std::string& name);
+  bool run_pick(unsigned label);
   //! Runs the close block and unloads the model.
   void close();
 

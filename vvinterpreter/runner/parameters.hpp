@@ -1,4 +1,4 @@
-// A model's parameters (`param` globals, vvlib/vv/plugin/plugin.hpp): listed, read
+// A model's parameters (`param` globals, vvlib/model/abi.hpp): listed, read
 // and set from text, checked against their type and range. The host keeps
 // the values a user gave (--set, the panel) and gives them to every fresh
 // instance of the model, before its start block.
@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include <vv/plugin/plugin.hpp>
+#include <model/abi.hpp>
 
 namespace vvi {
 

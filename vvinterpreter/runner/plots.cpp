@@ -22,22 +22,22 @@ std::string csv_cell(const std::string& text) {
 
 }  // namespace
 
-std::string plots_csv(const vv::proxy& p) {
+std::string plots_csv(const std::vector<vv_plot_series>& plots) {
   std::string out = "step";
-  for (const vv::plot_series& s : p.plots) out += "," + csv_cell(s.name);
+  for (const vv_plot_series& s : plots) out += "," + csv_cell(s.name);
   out += "\n";
   // step → the cell of each series (empty where it recorded nothing).
   std::map<unsigned, std::vector<std::string>> rows;
-  for (std::size_t column = 0; column < p.plots.size(); ++column) {
-    const vv::plot_series& s = p.plots[column];
-    for (std::size_t i = 0; i < s.steps.size(); ++i) {
+  for (std::size_t column = 0; column < plots.size(); ++column) {
+    const vv_plot_series& s = plots[column];
+    for (std::size_t i = 0; i < s.count; ++i) {
       std::vector<std::string>& row = rows[s.steps[i]];
-      row.resize(p.plots.size());
+      row.resize(plots.size());
       row[column] = vv::value_to_text(s.values[i]);
     }
   }
   for (auto& [step, cells] : rows) {
-    cells.resize(p.plots.size());
+    cells.resize(plots.size());
     out += std::to_string(step);
     for (const std::string& c : cells) out += "," + c;
     out += "\n";
@@ -45,10 +45,10 @@ std::string plots_csv(const vv::proxy& p) {
   return out;
 }
 
-std::string write_plots(const std::string& path, const vv::proxy& p) {
+std::string write_plots(const std::string& path, const std::vector<vv_plot_series>& plots) {
   return write_output(path, [&](const std::string& to) -> std::string {
     try {
-      vv::io::write_text_file(to, plots_csv(p));
+      vv::io::write_text_file(to, plots_csv(plots));
     } catch (const std::exception& e) {
       return e.what();
     }

@@ -4,17 +4,18 @@
 #pragma once
 
 #include <string>
+#include <vector>
 
-#include <vv/plugin/proxy.hpp>
+#include <model/abi.hpp>
 
 namespace vvi {
 
 //! CSV (RFC 4180): the header "step,NAME,...", then one row per step in
 //! increasing order; a series without a value at a step has an empty cell.
 //! Numbers are written so they read back exactly.
-std::string plots_csv(const vv::proxy& p);
+std::string plots_csv(const std::vector<vv_plot_series>& plots);
 
 //! Writes plots_csv to a file, atomically: "" or why not.
-std::string write_plots(const std::string& path, const vv::proxy& p);
+std::string write_plots(const std::string& path, const std::vector<vv_plot_series>& plots);
 
 }  // namespace vvi

@@ -1,11 +1,11 @@
 // A loaded model plugin: the shared object and its descriptor
-// (vvlib/vv/plugin/plugin.hpp). Unloading it destroys the model's state.
+// (vvlib/model/abi.hpp). Unloading it destroys the model's state.
 #pragma once
 
 #include <memory>
 #include <string>
 
-#include <vv/plugin/plugin.hpp>
+#include <model/abi.hpp>
 
 namespace vvi {
 

@@ -14,7 +14,12 @@ std::unique_ptr<session> session::load(const std::string& plugin_path, const ses
                                        std::string& error) {
   std::unique_ptr<plugin> p = plugin::open(plugin_path, error);
   if (!p) return nullptr;
-  vv_plugin_settings settings{s.model_dir.c_str(), s.seed, s.strict ? 1 : 0, s.check ? 1 : 0};
+  vv_plugin_settings settings{};
+  settings.model_dir = s.model_dir.c_str();
+  settings.seed = s.seed;
+  settings.strict_old_state = s.strict ? 1 : 0;
+  settings.check = s.check ? 1 : 0;
+  settings.threads = s.threads;
   p->model().configure(&settings);
   return std::unique_ptr<session>(new session(std::move(p), s.check));
 }
@@ -63,6 +68,43 @@ bool session::run(const char* block, plugin::block_fn fn, unsigned step, bool an
   return true;
 }
 
+// An action or a pick runs on the state the last step left: proxy.plot
+// records against that step, and the step count stays.
+template <class Call>
+bool session::run_between_steps(const std::string& what, Call call) {
+  plugin_->model().set_plot_step(steps_);
+  fault_guard::begin(what.c_str());
+  throw_points::keep(true);
+  const char* e = call();
+  throw_points::keep(false);
+  fault_guard::finish();
+  if (e) {
+    error_ = locate(e) + " (in " + what + ")";
+    return false;
+  }
+  return check_neighbourhoods(what);
+}
+
+bool session::run_action(const std::string& name) {
+  const vv_action_entry* a = action(name);
+  if (!a) {
+    std::string known;
+    for (const vv_action_entry* k : actions()) known += (known.empty() ? "\"" : ", \"") + std::string(k->name) + "\"";
+    error_ = "the model has no action \"" + name + "\"" + (known.empty() ? " (it has none)" : " (it has " + known + ")");
+    return false;
+  }
+  return run_between_steps("action \"" + name + "\"", [a] { return a->run(); });
+}
+
+bool session::run_pick(unsigned label) {
+  const vv_plugin& m = plugin_->model();
+  if (!m.pick) {
+    error_ = "the model has no pick block (pick of vertex " + std::to_string(label) + ")";
+    return false;
+  }
+  return run_between_steps("pick of vertex " + std::to_string(label), [&m, label] { return m.pick(label); });
+}
+
 bool session::check_neighbourhoods(const std::string& after) {
   if (!check_) return true;
   const char* broken = plugin_->model().check();
@@ -74,11 +116,11 @@ bool session::check_neighbourhoods(const std::string& after) {
 // proxy.plot records against the step running: 0 in start, N in step N,
 // the last step's number in end.
 bool session::start() {
-  proxy().plot_step = 0;
+  plugin_->model().set_plot_step(0);
   return run("start", plugin_->model().start) && check_neighbourhoods("start");
 }
 bool session::end() {
-  proxy().plot_step = steps_;
+  plugin_->model().set_plot_step(steps_);
   return run("end", plugin_->model().end);
 }
 bool session::reread() { return run("reread", plugin_->model().reread); }
@@ -91,7 +133,7 @@ bool session::render_screen() {
 }
 
 bool session::step() {
-  proxy().plot_step = steps_ + 1;
+  plugin_->model().set_plot_step(steps_ + 1);
   auto t = std::chrono::steady_clock::now();
   bool ok = run("step", plugin_->model().step, steps_ + 1);
   last_step_ms_ = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t).count();
@@ -106,6 +148,32 @@ void session::close() {
 }
 
 session::~session() { close(); }
+
+vv_run_settings session::run_settings() const {
+  vv_run_settings s{};
+  plugin_->model().run_settings(&s);
+  return s;
+}
+
+std::vector<vv_plot_series> session::plots() const {
+  const vv_plugin& m = plugin_->model();
+  std::vector<vv_plot_series> out(m.plot_count());
+  for (std::size_t i = 0; i < out.size(); ++i) m.plot_series(i, &out[i]);
+  return out;
+}
+
+std::vector<const vv_action_entry*> session::actions() const {
+  const vv_plugin& m = plugin_->model();
+  std::vector<const vv_action_entry*> out;
+  for (std::size_t i = 0; i < m.action_count; ++i) out.push_back(&m.actions[i]);
+  return out;
+}
+
+const vv_action_entry* session::action(const std::string& name) const {
+  for (const vv_action_entry* a : actions())
+    if (name == a->name) return a;
+  return nullptr;
+}
 
 std::vector<const vv_mesh_entry*> session::meshes() const {
   const vv_plugin& m = plugin_->model();

@@ -17,6 +17,7 @@ struct session_settings {
   std::uint64_t seed = 0;
   bool strict = false;    // reading a never-synchronised old state is an error
   bool check = false;     // check the neighbourhoods after start and every step
+  unsigned threads = 0;   // threads a parallel loop may use (0: the model decides)
 };
 
 class session {
@@ -28,6 +29,14 @@ class session {
   bool step();
   bool end();
   bool reread();
+  //! Runs the program's action of this name, supervised and reported like
+  //! a step (the error names its .vvp line and the action), without
+  //! advancing the step count; an unknown name is an error naming it.
+  bool run_action(const std::string& name);
+  //! Runs the program's pick block with the vertex of this label, like an
+  //! action; a model without a pick block, or a label no global mesh
+  //! holds, is an error naming it.
+  bool run_pick(unsigned label);
   //! The render blocks (call with the GL context current); true when the
   //! model has no such block.
   bool render_init();
@@ -49,8 +58,16 @@ class session {
   std::vector<const vv_mesh_entry*> meshes() const;
   //! A global mesh by name, or the first one when name is empty.
   const vv_mesh_entry* mesh(const std::string& name) const;
-  vv::proxy& proxy() const { return *plugin_->model().proxy(); }
-  //! The model's descriptor (vv/plugin/plugin.hpp).
+  //! What the program set in its proxy (steps, delay, view volume, ...).
+  vv_run_settings run_settings() const;
+  //! The series the program recorded with proxy.plot; the pointers in them
+  //! stay valid until the model's code runs again.
+  std::vector<vv_plot_series> plots() const;
+  //! The program's actions, in source order.
+  std::vector<const vv_action_entry*> actions() const;
+  //! The action of this name, or null.
+  const vv_action_entry* action(const std::string& name) const;
+  //! The model's descriptor (model/abi.hpp).
   const vv_plugin& model() const { return plugin_->model(); }
   //! Whether the program has this block, e.g. has_block(&vv_plugin::render).
   bool has_block(plugin::block_fn vv_plugin::*block) const { return plugin_->model().*block != nullptr; }
@@ -59,6 +76,9 @@ class session {
   session(std::unique_ptr<plugin> p, bool check) : plugin_(std::move(p)), check_(check) {}
   //! Runs a block as the named activity (runner/fault_guard.hpp).
   bool run(const char* block, plugin::block_fn fn, unsigned step = 0, bool announce = true);
+  //! Runs an action or the pick block (`what` names it) between steps.
+  template <class Call>
+  bool run_between_steps(const std::string& what, Call call);
   //! --check: false with the error set when a neighbourhood is broken.
   bool check_neighbourhoods(const std::string& after);
   //! The message with the .vvp line of an error that came without one.

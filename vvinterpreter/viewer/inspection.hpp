@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include <vv/plugin/plugin.hpp>
+#include <model/abi.hpp>
 
 #include "runner/mesh_counts.hpp"
 

@@ -34,115 +34,7 @@
 #include "../polylines.hpp"
 #include "proxy.hpp"
 
-// 5: one descriptor (vv_plugin_descriptor) instead of one symbol per entry.
-#define VV_PLUGIN_ABI_VERSION 5
-//! The one symbol a model exports.
-#define VV_PLUGIN_DESCRIPTOR_SYMBOL "vv_plugin_descriptor"
-#define VV_PLUGIN_EXPORT extern "C" __attribute__((visibility("default")))
-
-extern "C" {
-
-//! Run settings the host passes before calling start.
-struct vv_plugin_settings {
-  const char* model_dir;   //!< relative paths resolve against it (NULL/"": the .vvp's folder)
-  std::uint64_t seed;      //!< seeds the model's random generator
-  int strict_old_state;    //!< reading a never-synchronised old state is an error
-  int check;               //!< track edits for vv_plugin::check
-};
-
-//! A mesh's polygons, or a curve's polylines (vv/polylines.hpp), for
-//! drawing and for polygon file export; valid until the next call for the
-//! same model.
-struct vv_geometry {
-  std::size_t vertex_count;
-  const double* positions;           //!< 3 per vertex; NULL without a `pos` property
-  std::size_t face_count;
-  const std::uint32_t* face_offsets; //!< face i is face_vertices[offsets[i] .. offsets[i+1])
-  const std::uint32_t* face_vertices;
-  std::size_t line_count;            //!< polylines (a closed one repeats its first vertex)
-  const std::uint32_t* line_offsets; //!< line i is line_vertices[offsets[i] .. offsets[i+1])
-  const std::uint32_t* line_vertices;
-  const std::uint32_t* labels;       //!< the label of each vertex (picking)
-  //! In: a numeric vertex property to read per vertex (NULL or "": none).
-  const char* value_field;
-  //! Out: value_field of each vertex; NULL when there is no numeric
-  //! vertex property of that name.
-  const double* values;
-  const char* numeric_fields;        //!< the numeric vertex properties, "a, b"
-};
-
-//! A parameter of the program (`param TYPE NAME = VALUE [in [LO, HI]];`):
-//! a global the host reads and writes through `value`, which points to a
-//! bool, int, unsigned, float or double as `type` says.
-struct vv_param_entry {
-  const char* name;
-  const char* type;
-  void* value;
-  int has_range;
-  double lo, hi;
-  int line;  //!< of its declaration in the .vvp
-};
-
-//! One global mesh of the program.
-struct vv_mesh_entry {
-  const char* name;
-  std::size_t (*vertex_count)(void);
-  //! Writes the mesh as .vvm; NULL or the error.
-  const char* (*write_vvm)(const char* path);
-  //! Face orbits of at most max_face corners (0: no limit); NULL or the error.
-  const char* (*geometry)(std::size_t max_face, vv_geometry* out);
-};
-
-//! A model: what the host may call. Blocks and functions return NULL, or
-//! the error (file:line: ...).
-struct vv_plugin {
-  //! VV_PLUGIN_ABI_VERSION of the vvlib the model was built with. It stays
-  //! the first member in every version, so any host can read it.
-  int abi_version;
-
-  //! The execution blocks, in vvc's order of block names; NULL when the
-  //! program has no such block.
-  const char* (*start)(void);
-  const char* (*step)(void);
-  const char* (*end)(void);
-  const char* (*close)(void);
-  const char* (*render_init)(void);
-  const char* (*render)(void);
-  const char* (*render_screen)(void);
-
-  //! The global meshes, in declaration order (NULL and 0 when there are none).
-  const vv_mesh_entry* meshes;
-  std::size_t mesh_count;
-  //! The program's parameters (`param` globals), in source order.
-  const vv_param_entry* params;
-  std::size_t param_count;
-
-  //! Run settings, before start.
-  void (*configure)(const vv_plugin_settings* settings);
-  //! Re-reads the file-backed objects in the proxy's lists.
-  const char* (*reread)(void);
-  vv::proxy* (*proxy)(void);
-  //! The union of the named global meshes (a vertex in several counts
-  //! once), written as .vvm or given as polygons.
-  const char* (*union_vvm)(const char* const* names, std::size_t count, const char* path);
-  const char* (*union_geometry)(const char* const* names, std::size_t count, std::size_t max_face,
-                                vv_geometry* out);
-  //! The first broken neighbourhood of any global mesh, with the lines that
-  //! last edited it, or NULL (vvinterpreter --check, after start and each step).
-  const char* (*check)(void);
-  //! Describes the vertex with this label (vv/inspect.hpp) in *text; NULL,
-  //! or the error (no such vertex in any global mesh).
-  const char* (*describe_vertex)(unsigned label, const char** text);
-  //! The files the model's file objects read (vv/file_objects.hpp), one per line.
-  const char* (*file_objects)(void);
-  //! Return addresses of the last error whose message has no source location.
-  const void* const* (*error_frames)(std::size_t* count);
-};
-
-//! Defined by the translated program.
-extern const vv_plugin vv_plugin_descriptor;
-
-}  // extern "C"
+#include "../../model/abi.hpp"
 
 namespace vv::plugin {
 
@@ -159,17 +51,6 @@ struct exchange {
   std::shared_ptr<void> union_mesh;  //!< the last union_geometry's mesh
   std::vector<char> was_symmetric;   //!< per global mesh, at the last check
 };
-
-}  // namespace vv::plugin
-
-extern "C" {
-//! Given by a host that keeps where exceptions are thrown (vvinterpreter):
-//! the return addresses of the last throw on this thread while a block
-//! runs. Weak: NULL in any other host.
-__attribute__((weak)) std::size_t vv_host_throw_frames(void** frames, std::size_t max);
-}
-
-namespace vv::plugin {
 
 //! Runs fn, turning any exception into the returned message (or NULL). An
 //! exception that is not a vv::error keeps where it was thrown, when the
@@ -324,6 +205,46 @@ const char* describe_vertex(exchange& x, const named_mesh<Tr> (&all)[N], unsigne
     x.text = vv::describe_vertex(ctx, meshes, names, id);
     *text = x.text.c_str();
   });
+}
+
+//! vv_plugin::run_settings: what the program set in its proxy.
+inline void run_settings(const proxy& p, vv_run_settings* out) noexcept {
+  *out = vv_run_settings{};
+  out->steps = p.steps;
+  out->delay_msec = p.delay_msec;
+  out->no_animate = p.no_animate ? 1 : 0;
+  out->record_frame = p.record_frame ? 1 : 0;
+  out->max_face = p.max_face;
+  out->has_view_volume = p.has_view_volume ? 1 : 0;
+  for (int i = 0; i < 3; ++i) out->view_min[i] = p.view_min[i], out->view_max[i] = p.view_max[i];
+}
+
+//! vv_plugin::plot_series: series i of the proxy's plots (an empty series
+//! past the end).
+inline void plot_series_of(const proxy& p, std::size_t i, vv_plot_series* out) noexcept {
+  *out = vv_plot_series{};
+  if (i >= p.plots.size()) return;
+  const vv::plot_series& s = p.plots[i];
+  out->name = s.name.c_str();
+  out->count = s.values.size();
+  out->steps = s.steps.data();
+  out->values = s.values.data();
+}
+
+//! vv_plugin::pick: runs the pick block with the vertex of this label.
+template <class Tr, std::size_t N, class Block>
+const char* pick(exchange& x, const named_mesh<Tr> (&all)[N], unsigned label, Block block) noexcept {
+  std::vector<const mesh<Tr>*> meshes;
+  for (const named_mesh<Tr>& n : all) meshes.push_back(n.m);
+  context<Tr>& ctx = *all[0].m->ctx();
+  std::uint32_t id = slot_of_label(ctx, meshes, label);
+  if (!id) {
+    // The host's mistake, not the program's: no line to look for.
+    x.error_frames.clear();
+    x.last_error = "no global mesh holds a vertex " + std::to_string(label);
+    return x.last_error.c_str();
+  }
+  return guarded(x, [&] { block(vertex<Tr>::from_slot(&ctx, id)); });
 }
 
 //! vv_plugin::file_objects: the registered objects' files and those of the
