@@ -263,6 +263,30 @@ TEST(Restart, ANewBuildThatCrashesOnItsWayInIsNotLoadedAgain) {
   }
 }
 
+// The pipe names an action and a pick by what they are (`action "Lift"`,
+// `pick of vertex 3`): a new build that crashes in one while its log is
+// replayed is not loaded again either; a crash in one while the good
+// model's log is replayed stops the replay there.
+TEST(Restart, ACrashInAReplayedActionOrPickStopsTheReplayThere) {
+  vvi::options o;
+  o.model = "m.vvp";
+  vvi::state_record last = running("step 2\naction Lift\npick-action 3\n");
+  last.trying = "new.so";
+  for (const char* what : {"action \"Lift\"", "pick of vertex 3"}) {
+    vvi::restart r = vvi::restart_after(o, last, crash_in(what, 0));
+    EXPECT_EQ(r.record.bad_plugin, "new.so") << what;
+    EXPECT_EQ(r.record.log.text(), "step 2\naction Lift\npick-action 3\n") << what;
+  }
+  last.trying.clear();
+  last.replaying = 2;
+  vvi::restart r = vvi::restart_after(o, last, crash_in("pick of vertex 3", 0));
+  EXPECT_EQ(r.record.bad_plugin, "");
+  EXPECT_EQ(r.record.log.text(), "step 2\naction Lift\n");
+  EXPECT_NE(r.report.find("crashed with SIGSEGV in pick of vertex 3; the replay stopped at event 3 of 3 (pick-action 3)"),
+            std::string::npos)
+      << r.report;
+}
+
 TEST(Restart, AModelThatCrashesInStartIsNotStartedAgain) {
   vvi::options o;
   o.model = "m.vvp";

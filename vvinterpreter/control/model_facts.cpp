@@ -31,6 +31,8 @@ model_facts read_facts(const session* model, const std::vector<std::string>& fil
     }
     f.plots.push_back(std::move(v));
   }
+  for (const vv_action_entry* a : model->actions()) f.actions.push_back({a->name, a->key, a->line});
+  f.has_pick = model->model().pick != nullptr;
   f.file_objects = file_objects;
   return f;
 }

@@ -1,8 +1,8 @@
 // What the host shows and uses of a model's state: its step, its run
-// settings, its meshes' sizes, parameters, plots and files. Read while the
-// model is idle, after every job, and kept as they are while the next job
-// runs (the model's state is not to be read then): the panel always shows
-// the state the last job left.
+// settings, its meshes' sizes, parameters, plots, files and actions. Read
+// while the model is idle, after every job, and kept as they are while the
+// next job runs (the model's state is not to be read then): the panel
+// always shows the state the last job left.
 #pragma once
 
 #include <cstddef>
@@ -31,6 +31,13 @@ struct plot_view {
   double last = 0;
 };
 
+//! An action of the program (`action "NAME" key 'k'`), for its button and key.
+struct action_view {
+  std::string name;
+  int key = 0;  //!< 0: none; else a lowercase letter or a digit
+  int line = 0;
+};
+
 struct model_facts {
   bool loaded = false;
   unsigned steps = 0;            //!< completed steps
@@ -43,6 +50,8 @@ struct model_facts {
   std::vector<parameter_view> parameters;
   std::vector<plot_view> plots;
   std::vector<std::string> file_objects;  //!< the files its file objects read
+  std::vector<action_view> actions;       //!< in source order
+  bool has_pick = false;                  //!< the program has a pick block
 };
 
 //! The facts of a loaded, idle model (nullptr: none loaded).

@@ -204,10 +204,8 @@ bool model_controller::carry_event(const command& c, unsigned long& steps, std::
     case command::end: ok = runner_.end(); break;
     case command::reread: ok = runner_.reread(); break;
     case command::set: failure = runner_.set_parameter(c.name, c.value); return failure.empty();
-    case command::action:
-    case command::pick_action:
-      failure = o_.model + ": " + command_text(c) + ": this interpreter cannot run a model's actions yet";
-      return false;
+    case command::action: ok = runner_.run_action(c.name); break;
+    case command::pick_action: ok = runner_.run_pick(static_cast<unsigned>(c.number)); break;
     default: return true;
   }
   if (!ok) failure = runner_.error();

@@ -7,10 +7,12 @@ namespace vvi {
 
 namespace {
 
-// The model's own code, as the report pipe names what it runs.
+// The model's own code, as the report pipe names what it runs (`action
+// "Grow"`, `pick of vertex 12`) or a Stop the job it stopped ("action").
 bool model_activity(const std::string& what) {
-  return what == "loading" || what == "start" || what == "step" || what == "end" || what == "reread" ||
-         what == "action" || what == "pick";
+  std::string word = what.substr(0, what.find(' '));
+  return word == "loading" || word == "start" || word == "step" || word == "end" || word == "reread" ||
+         word == "action" || word == "pick";
 }
 
 std::string note_for(const state_record& r) {

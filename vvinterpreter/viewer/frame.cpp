@@ -38,6 +38,7 @@ panel_state panel_state_of(const viewer_parts& v) {
   s.parameters = f.parameters;
   s.plots = f.plots;
   s.file_objects = f.file_objects;
+  s.actions = f.actions;
   s.animating = c.animating();
   s.replay = c.record().replay;
   s.rewind_on_change = c.record().rewind_on_change;

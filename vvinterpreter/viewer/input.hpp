@@ -1,5 +1,7 @@
-// The mouse and the keys. Keys give commands (the table in input.cpp is
-// the one list of the viewer's keys); a click gives a command too: Ctrl+click
+// The mouse and the keys. Keys give commands: the viewer's letter keys are
+// vv::model::viewer_keys (the list vvc checks actions' keys against), its
+// other keys a table in input.cpp, and any other letter or digit runs the
+// model's action with that key. A click gives a command too: Ctrl+click
 // inspects the vertex under the cursor, Shift+click runs the model's pick
 // block on it (a click: pressed and released without moving; a Shift+drag
 // pans). Drags and the wheel move the camera directly.
@@ -23,10 +25,6 @@ struct scene_layout {
   };
   area in_window(int w) const;
 };
-
-//! The keys the viewer itself uses that a letter or digit names (a model's
-//! action may not take them): "a", "e", ...
-const char* viewer_letter_keys();
 
 class viewer_input : public input_handler {
  public:

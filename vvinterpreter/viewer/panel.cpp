@@ -103,6 +103,7 @@ panel_actions draw_panel_once(const panel_state& s, bool& changed_size) {
   }
   if (!s.warnings.empty() && ImGui::CollapsingHeader("Compiler warnings")) ImGui::TextWrapped("%s", s.warnings.c_str());
   draw_inspector(s, a);
+  draw_actions(s, a);
   draw_parameters(s, a);
   draw_plots(s);
   draw_display(s, a);

@@ -3,7 +3,7 @@
 //
 // Its layout: the model's state and buttons, then the picked vertex (when
 // there is one: near the top, so a pick is always in view), then the
-// sections Parameters, Plots and Display, each folding away. The panel is
+// sections Actions, Parameters, Plots and Display, each folding away. The panel is
 // never taller than the window; what does not fit scrolls.
 #pragma once
 
@@ -48,6 +48,7 @@ struct panel_state {
   std::string picked;  // the picked vertex described, or ""
   unsigned picked_label = 0;  // a new label opens the inspector again
   std::vector<std::string> file_objects;  // files the model reads, reread on save
+  std::vector<action_view> actions;       // the program's, a button each
 };
 
 struct panel_actions {
@@ -60,6 +61,7 @@ struct panel_actions {
 };
 
 //! The sections below the model's controls (viewer/panel_sections.cpp).
+void draw_actions(const panel_state& s, panel_actions& a);
 void draw_inspector(const panel_state& s, panel_actions& a);
 void draw_parameters(const panel_state& s, panel_actions& a);
 void draw_plots(const panel_state& s);

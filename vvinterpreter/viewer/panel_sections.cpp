@@ -1,5 +1,5 @@
 // The panel's sections for looking into a model: the picked vertex, its
-// parameters, its plots, and how it is drawn.
+// actions, its parameters, its plots, and how it is drawn.
 #include <imgui.h>
 
 #include <algorithm>
@@ -60,6 +60,33 @@ void parameter_row(const parameter_view& p, panel_actions& a) {
 }
 
 }  // namespace
+
+// A button per action, its key in brackets, as many to a line as fit.
+void draw_actions(const panel_state& s, panel_actions& a) {
+  if (s.actions.empty() || !ImGui::CollapsingHeader("Actions", ImGuiTreeNodeFlags_DefaultOpen)) return;
+  bool disabled = !s.has_model || s.busy;
+  if (disabled) ImGui::BeginDisabled();
+  const float line_width = 300;  // the panel's narrowest
+  const ImGuiStyle& style = ImGui::GetStyle();
+  float used = 0;
+  for (std::size_t i = 0; i < s.actions.size(); ++i) {
+    const action_view& v = s.actions[i];
+    std::string label = v.name + (v.key ? std::string(" (") + static_cast<char>(v.key) + ")" : "");
+    float width = ImGui::CalcTextSize(label.c_str()).x + 2 * style.FramePadding.x;
+    if (i > 0 && used + style.ItemSpacing.x + width <= line_width) {
+      ImGui::SameLine();
+      used += style.ItemSpacing.x + width;
+    } else {
+      used = width;
+    }
+    ImGui::PushID(static_cast<int>(i));
+    if (ImGui::Button(label.c_str())) a.add(command::named(command::action, v.name));
+    if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled))
+      ImGui::SetTooltip("action \"%s\", line %d", v.name.c_str(), v.line);
+    ImGui::PopID();
+  }
+  if (disabled) ImGui::EndDisabled();
+}
 
 void draw_parameters(const panel_state& s, panel_actions& a) {
   if (s.parameters.empty() || !ImGui::CollapsingHeader("Parameters", ImGuiTreeNodeFlags_DefaultOpen)) return;
