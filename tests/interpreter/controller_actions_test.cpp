@@ -73,6 +73,8 @@ TEST(ControllerActions, AnActionThatFailsBringsTheModelBackToTheStateBeforeIt) {
             "<mesh>\n  <v pos=\"0 0 0\" nb=\"\" />\n  <v pos=\"1 0 0\" nb=\"\" />\n</mesh>\n");
 }
 
+// An unknown action, or a pick of a model without a pick block, runs none
+// of the model's code; an unknown label is the pick block's own error.
 TEST(ControllerActions, AnUnknownActionOrLabelIsAnErrorNamingIt) {
   controlled m("lifts.vvp");
   m.run("action Nope");
@@ -80,10 +82,20 @@ TEST(ControllerActions, AnUnknownActionOrLabelIsAnErrorNamingIt) {
   EXPECT_NE(m.view.errors[0].find("the model has no action \"Nope\" (it has \"Lift\", \"Lift and fail\", \"Crash\")"),
             std::string::npos)
       << m.view.errors[0];
+  // Nothing ran: the model was not restored (run again) either.
+  for (const std::string& said : m.view.said) EXPECT_EQ(said.find("restored"), std::string::npos) << said;
   m.run("pick-action 9");
   ASSERT_EQ(m.view.errors.size(), 2u);
   EXPECT_NE(m.view.errors[1].find("vertex 9"), std::string::npos) << m.view.errors[1];
   EXPECT_TRUE(m.c.log().events.empty());
+  controlled without("history.vvp");
+  without.run("step");
+  without.run("pick-action 1");
+  ASSERT_EQ(without.view.errors.size(), 1u);
+  EXPECT_NE(without.view.errors[0].find("the model has no pick block (pick of vertex 1)"), std::string::npos)
+      << without.view.errors[0];
+  for (const std::string& said : without.view.said) EXPECT_EQ(said.find("restored"), std::string::npos) << said;
+  EXPECT_EQ(without.c.log().text(), "step 1\n");
 }
 
 // A session saved with actions and picks reads back as the same log.

@@ -1,5 +1,6 @@
 #include "control/model_controller.hpp"
 
+#include <algorithm>
 #include <cstdio>
 
 #include <vv/io/files.hpp>
@@ -216,7 +217,23 @@ void model_controller::run_step(bool) {
           });
 }
 
+// An action the program does not have, or a pick without a pick block:
+// none of the model's code runs, so there is nothing to restore.
+bool model_controller::runs_nothing(const command& c) const {
+  if (c.kind == command::pick_action) return !facts_.has_pick;
+  if (c.kind != command::action) return false;
+  return std::none_of(facts_.actions.begin(), facts_.actions.end(),
+                      [&c](const action_view& a) { return a.name == c.name; });
+}
+
 void model_controller::run_event(const command& c) {
+  if (runs_nothing(c)) {
+    // The runner says why, without running the model.
+    std::string why;
+    unsigned long steps = 0;
+    carry_event(c, steps, why);
+    return error(why, why);
+  }
   std::string activity = c.kind == command::pick_action ? "pick" : command_word(c.kind);
   std::string what = c.kind == command::end || c.kind == command::reread ? activity : command_text(c);
   auto failure = std::make_shared<std::string>();

@@ -119,6 +119,7 @@ class model_controller {
   // Model commands (model_controller.cpp).
   void run_step(bool user);
   void run_event(const command& c);
+  bool runs_nothing(const command& c) const;
   void event_done(const command& c, bool ok, const std::string& error);
   void set_parameter(const command& c);
   void write_out(const command& c);

@@ -98,7 +98,9 @@ void viewer_input::on_button(int button, int action, int mods) {
     pressed_x_ = mouse_x_, pressed_y_ = mouse_y_;
     return;
   }
-  if (shift_click_ && left) {
+  // A Shift+click on a vertex of a model with a pick block (elsewhere it is
+  // a pan that did not move).
+  if (shift_click_ && left && controller_.facts().has_pick) {
     if (unsigned label = label_under_cursor()) controller_.submit(command::labelled(command::pick_action, label));
   }
   shift_click_ = false;
