@@ -78,8 +78,9 @@ inline vvi::event_log log_of(const std::string& text) {
 
 // A controller on a loaded model, with the log given replayed.
 struct controlled {
-  explicit controlled(const std::string& model, const vvi::event_log& log = {}, vvi::state_record from = {})
-      : o(options_for(model)), c(o, jobs, view, from) {
+  explicit controlled(const std::string& model, const vvi::event_log& log = {}, vvi::state_record from = {},
+                      vvi::controller_policy policy = {})
+      : o(options_for(model)), c(o, jobs, view, from, policy) {
     if (!from.restarted) c.load_build(built(model), log), c.poll(0);
   }
   void run(const command& cmd) {

@@ -153,6 +153,21 @@ TEST(ModelController, ABuildThatCrashedOnItsWayInIsNotLoadedAgain) {
   EXPECT_EQ(m.c.status(), "no model: it crashed while loading; edit it to try again");
 }
 
+// Batch's policy: the first error ends the run, and the commands queued
+// after the one that failed are dropped, not carried out.
+TEST(ModelController, WithoutRestoringAnErrorEndsTheRunAndDropsWhatFollows) {
+  controlled m("history.vvp", {}, {}, vvi::controller_policy{false});
+  std::string bad = test_files::scratch_dir() + "out.xyz";
+  m.c.submit(command::with_path(command::export_mesh, bad));
+  m.c.submit(command::steps(1));
+  m.c.poll(0);
+  ASSERT_TRUE(m.c.failed());
+  EXPECT_NE(m.c.failure().find("out.xyz"), std::string::npos) << m.c.failure();
+  EXPECT_EQ(m.c.facts().steps, 0u);
+  EXPECT_TRUE(m.c.log().events.empty());
+  EXPECT_TRUE(m.c.idle());
+}
+
 // The script's commands go one at a time, each once the one before has
 // finished, and the record has the position before the command runs.
 TEST(ScriptPlayer, GivesEachCommandOnceTheOneBeforeIsDoneAndTellsThePositionFirst) {

@@ -115,9 +115,12 @@ bool model_controller::start_next(double now) {
   }
   if (now < wait_until_) return false;
   if (!queue_.empty()) {
-    if (!carry_out(queue_.front(), now)) return false;
+    // Taken off first: carrying it out may clear the queue (an error in batch).
+    command next = queue_.front();
     queue_.pop_front();
-    return true;
+    if (carry_out(next, now)) return true;
+    queue_.push_front(next);  // the view is not ready for it yet
+    return false;
   }
   if (animating_ && runner_.model() && now - last_animated_ >= facts_.delay_msec / 1000.0) {
     last_animated_ = now;
