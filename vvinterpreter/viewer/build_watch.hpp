@@ -23,6 +23,10 @@ class build_watch {
   void build_started();
   //! The build's sources are watched from the state they had when it started.
   void build_finished(const build_result& b);
+  //! The files the model's file objects read, as the job just done left
+  //! them: watched from now (before the next job, so a save while it runs
+  //! is a change).
+  void model_files(const std::vector<std::string>& files);
   //! Looks at the files (at most every 0.25 s) and gives the controller
   //! what their changes ask for.
   void check(double now, model_controller& c);

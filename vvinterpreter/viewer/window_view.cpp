@@ -22,6 +22,7 @@ bool window_view::caught_up() const {
 
 void window_view::model_changed(const model_change& c) {
   drawn_since_job_ = false;  // each state a job leaves is drawn (and recorded) once before the next
+  watch_.model_files(controller_->facts().file_objects);
   const model_runner& r = controller_->runner();
   if (c.kind == model_change::loaded) {
     const std::string& no_render = controller_->record().no_render_plugin;
