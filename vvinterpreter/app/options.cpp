@@ -7,17 +7,16 @@
 #include <string>
 
 #include "compile/build_config.hpp"
+#include "control/command_text.hpp"
 #include "experiment/sweep_options.hpp"
-#include "viewer/script.hpp"
 
 namespace vvi {
 
-const char* usage_text =
+namespace {
+
+const char* const synopsis =
     "usage: vvinterpreter [options] MODEL.vvp\n"
-    "       vvinterpreter --batch [--steps N] [--end] [--export FILE] [--mesh NAME[,NAME...]]\n"
-    "                     [--max-face N] [--screenshot FILE.png --size WxH] [--seed S] [--threads N]\n"
-    "                     [--step-timeout SECONDS] [--set NAME=VALUE ...] [--plots FILE.csv]\n"
-    "                     [--pick LABEL ...] [--color-by NAME] MODEL.vvp\n"
+    "       vvinterpreter --batch [options] MODEL.vvp\n"
     "       vvinterpreter --list-params [--set NAME=VALUE ...] MODEL.vvp\n"
     "       vvinterpreter --compile-only MODEL.vvp\n"
     "       vvinterpreter --sweep NAME=V1,V2,... [--sweep NAME=LO:HI:COUNT ...] [--seeds K]\n"
@@ -28,61 +27,10 @@ const char* usage_text =
     "headless with --batch: start, N steps, (end), export, screenshot, close.\n"
     "A model that crashes or hangs never takes the viewer down: it is reported\n"
     "with its .vvp line and restarted.\n"
-    "MODEL may also be a plugin (.so) built earlier.\n"
-    "\n"
-    "options:\n"
-    "  --batch            run without a window\n"
-    "  --steps N          steps to run in batch mode (default 0)\n"
-    "  --end              run the end block after the last step (batch)\n"
-    "  --export FILE      write a mesh after the steps: .vvm .obj .off .ply .stl .vtp\n"
-    "  --mesh NAME[,NAME] the global meshes to export or draw, as one (default: the first)\n"
-    "  --step-timeout S   end a step that runs longer than S seconds, as an error (batch)\n"
-    "  --max-face N       face orbits longer than N are holes, not faces\n"
-    "  --screenshot FILE  render a PNG after the steps (batch: offscreen)\n"
-    "  --size WxH         the screenshot's size (default 800x600)\n"
-    "  --view YAW PITCH   turn the screenshot's view by these degrees (default 0 0)\n"
-    "  --seed S           seed of the model's random numbers (default 0)\n"
-    "  --strict           reading the old state of a never-synchronised vertex is an error, and\n"
-    "                     a parallel forall runs in order, checking that each iteration changes\n"
-    "                     only its own vertex's properties\n"
-    "  --threads N        threads of a parallel forall (default: the machine's cores); the\n"
-    "                     results do not depend on it\n"
-    "  --set NAME=VALUE   give the parameter NAME (a `param` of the program) this value;\n"
-    "                     repeatable\n"
-    "  --list-params      print the parameters (name, type, value, range) and exit\n"
-    "  --plots FILE.csv   batch: write what the model recorded with proxy.plot, a column\n"
-    "                     per series (the first column: the step)\n"
-    "  --pick LABEL       batch: print the vertex with this label (properties, neighbourhood,\n"
-    "                     half-edge records) after the steps; repeatable\n"
-    "  --color-by NAME    colour the drawing by a numeric vertex property (with a colour bar)\n"
-    "  --check            after start and every step, check every global mesh's neighbourhoods\n"
-    "                     and stop at the first broken one, naming the line that last edited it\n"
-    "  --script FILE      viewer: run the commands in FILE, one per line (listed below)\n"
-    "  --frames DIR       where proxy.record_frame writes frame_NNNNN.png (default ./frames)\n"
-    "  --compile-only     translate and compile, then exit\n"
-    "  --cache DIR        compiled models (default $VV_CACHE_DIR or ~/.cache/vv)\n"
-    "  --opt N            optimisation level for models (0-3, default 1)\n"
-    "  --rebuild          compile the model even when the cache holds it (batch,\n"
-    "                     --compile-only; the viewer has its Recompile button)\n"
-    "  --debug            build the model with -g -O0 and run it in this process, for gdb\n"
-    "  --in-process       batch: run the model in this process, unsupervised (a crash\n"
-    "                     then ends the interpreter; for profilers and debuggers)\n"
-    "  --quiet            no progress or summary lines\n"
-    "\n"
-    "experiments (docs/experiments.md):\n"
-    "  --sweep NAME=V1,V2,...  run the model for each value of the parameter NAME;\n"
-    "  --sweep NAME=LO:HI:COUNT  or for COUNT values from LO to HI; repeatable (every\n"
-    "                     combination runs)\n"
-    "  --seeds K          run each combination with the seeds 1 to K\n"
-    "  --jobs J           runs at a time, each in its own process (default: the cores)\n"
-    "  --out DIR          the sweep's folder: run-NNNN/ per run, runs.csv, failed.csv\n"
-    "  --shard I/N        run only every N-th run from run I (a cluster's job array)\n"
-    "  --slurm N          write (and submit with sbatch) a Slurm job array of N shards\n"
-    "                     and a job that merges them into DIR\n"
-    "  --merge DIR...     join shard folders of one sweep into --out DIR\n"
-    "  --help, --version\n";
+    "MODEL may also be a plugin (.so) built earlier.\n";
 
-namespace {
+// The sections of --help, in order; each option names its own.
+const char* const sections[] = {"modes", "batch", "model", "viewer", "building", "experiments"};
 
 // Thrown by an option that cannot take its value, with the reason.
 struct usage_error {
@@ -106,76 +54,80 @@ unsigned long long number(const std::string& v, unsigned long long lo, unsigned 
   return n;
 }
 
-// An option with one value. `take` runs at each occurrence, in command-line
-// order (a later one wins, or adds, as take decides); a missing value
-// reaches it as "" so that each option says itself what it needs.
-void with_value(CLI::App& app, const std::string& name, std::function<void(const std::string&)> take) {
-  app.add_option_function<std::string>(name, std::move(take))->expected(0, 1)->trigger_on_parse();
+// An option with one value: its name, the value's name, its section and
+// what it does. `take` runs at each occurrence, in command-line order (a
+// later one wins, or adds, as take decides); a missing value reaches it as
+// "" so that each option says itself what it needs.
+void with_value(CLI::App& app, const std::string& name, const std::string& value, const char* section,
+                const std::string& what, std::function<void(const std::string&)> take) {
+  app.add_option_function<std::string>(name, std::move(take), what)
+      ->expected(0, 1)
+      ->trigger_on_parse()
+      ->option_text(value)
+      ->group(section);
 }
 
-void flag(CLI::App& app, const std::string& name, bool& set) {
-  app.add_flag_callback(name, [&set] { set = true; })->trigger_on_parse();
+void flag(CLI::App& app, const std::string& name, const char* section, const std::string& what, bool& set) {
+  app.add_flag_callback(name, [&set] { set = true; }, what)->trigger_on_parse()->group(section);
 }
 
 // An option naming a file or a folder (any text but "").
-void text(CLI::App& app, const std::string& name, std::string& out) {
-  with_value(app, name, [name, &out](const std::string& v) {
+void text(CLI::App& app, const std::string& name, const std::string& value, const char* section,
+          const std::string& what, std::string& out) {
+  with_value(app, name, value, section, what, [name, &out](const std::string& v) {
     if (v.empty()) throw usage_error{name + " needs a value"};
     out = v;
   });
 }
 
+// "WHAT@STEP" of --action and --pick-action: the step after the last '@'.
+unsigned long at_step(const std::string& v, const std::string& option, std::string& what) {
+  std::size_t at = v.rfind('@');
+  std::string need = option + " needs " + (option == "--action" ? "NAME" : "LABEL") + "@STEP, e.g. " + option +
+                     (option == "--action" ? " Divide@3" : " 17@3");
+  if (at == std::string::npos || at == 0) throw usage_error{need};
+  what = v.substr(0, at);
+  return static_cast<unsigned long>(number(v.substr(at + 1), 0, 100000000, need.c_str()));
+}
+
 void answers(CLI::App& app) {
-  app.set_help_flag();  // usage_text is the help: it says more than a generated one would
+  app.set_help_flag();  // usage_text() is the help: it has the sections and the script commands
   app.add_flag_callback("--help,-h", [] {
-       throw answered{std::string(usage_text) + "\nscript commands (--script FILE):\n" + script_help};
-     })->trigger_on_parse();
+       throw answered{usage_text() + "\nscript commands (--script FILE):\n" + command_help()};
+     }, "this text")->trigger_on_parse()->group("modes");
   app.add_flag_callback("--version", [] {
        throw answered{std::string("vvinterpreter ") + config::version + "\n"};
-     })->trigger_on_parse();
+     }, "the version")->trigger_on_parse()->group("modes");
 }
 
-void switches(CLI::App& app, options& o) {
-  flag(app, "--batch", o.batch);
-  flag(app, "--compile-only", o.compile_only);
-  flag(app, "--strict", o.strict);
-  flag(app, "--list-params", o.list_params);
-  flag(app, "--check", o.check);
-  flag(app, "--quiet", o.quiet);
-  flag(app, "--end", o.end_block);
-  flag(app, "--debug", o.debug);
-  flag(app, "--in-process", o.in_process);
-  flag(app, "--rebuild", o.rebuild);
+void modes(CLI::App& app, options& o) {
+  flag(app, "--batch", "modes", "run without a window", o.batch);
+  flag(app, "--list-params", "modes", "print the parameters (name, type, value, range) and exit", o.list_params);
+  flag(app, "--compile-only", "modes", "translate and compile, then exit", o.compile_only);
 }
 
-void numbers(CLI::App& app, options& o) {
-  with_value(app, "--steps", [&o](const std::string& v) {
+void batch_options(CLI::App& app, options& o) {
+  with_value(app, "--steps", "N", "batch", "steps to run in batch mode (default 0)", [&o](const std::string& v) {
     o.steps = static_cast<unsigned>(number(v, 0, 100000000, "--steps needs a count"));
   });
-  with_value(app, "--max-face", [&o](const std::string& v) {
-    o.max_face = number(v, 3, ~0ull, "--max-face needs a number of corners (3 or more)");
-  });
-  with_value(app, "--seed", [&o](const std::string& v) { o.seed = number(v, 0, ~0ull, "--seed needs a non-negative number"); });
-  with_value(app, "--threads", [&o](const std::string& v) {
-    o.threads = static_cast<unsigned>(number(v, 1, 1024, "--threads needs a number of threads (1 to 1024)"));
-  });
-  with_value(app, "--opt", [&o](const std::string& v) {
-    o.optimization = static_cast<int>(number(v, 0, 3, "--opt needs a level from 0 to 3"));
-  });
-  with_value(app, "--pick", [&o](const std::string& v) {
-    o.picks.push_back(static_cast<unsigned>(number(v, 1, 0xffffffffull, "--pick needs a vertex label (1 or more)")));
-  });
-  with_value(app, "--step-timeout", [&o](const std::string& v) {
-    if (v.empty()) throw usage_error{"--step-timeout needs a number of seconds"};
-    char* end = nullptr;
-    o.step_timeout = std::strtod(v.c_str(), &end);
-    if (*end || !(o.step_timeout > 0) || o.step_timeout > 1e6)
-      throw usage_error{"--step-timeout needs a number of seconds greater than 0"};
-  });
-}
-
-void view_options(CLI::App& app, options& o) {
-  with_value(app, "--size", [&o](const std::string& v) {
+  flag(app, "--end", "batch", "run the end block after the last step", o.end_block);
+  with_value(app, "--action", "NAME@STEP", "batch", "run the model's action NAME after step STEP (0: after start)",
+             [&o](const std::string& v) {
+               std::string name;
+               unsigned long step = at_step(v, "--action", name);
+               o.events_at.emplace_back(step, command::named(command::action, name));
+             });
+  with_value(app, "--pick-action", "LABEL@STEP", "batch",
+             "run the model's pick block on the vertex LABEL after step STEP", [&o](const std::string& v) {
+               std::string label;
+               unsigned long step = at_step(v, "--pick-action", label);
+               unsigned long n = number(label, 1, 0xffffffffull, "--pick-action needs a vertex label (1 or more)");
+               o.events_at.emplace_back(step, command::labelled(command::pick_action, n));
+             });
+  text(app, "--replay", "FILE", "batch", "run the events of a session the viewer saved, before the steps", o.replay);
+  text(app, "--export", "FILE", "batch", "write a mesh after the steps: .vvm .obj .off .ply .stl .vtp", o.export_path);
+  text(app, "--screenshot", "FILE", "batch", "render a PNG after the steps (offscreen)", o.screenshot);
+  with_value(app, "--size", "WxH", "batch", "the screenshot's size (default 800x600)", [&o](const std::string& v) {
     const char* need = "--size needs WIDTHxHEIGHT, e.g. 800x600 (at most 16384 each way)";
     if (v.empty()) throw usage_error{"--size needs WIDTHxHEIGHT"};
     std::size_t x = v.find('x');
@@ -192,32 +144,98 @@ void view_options(CLI::App& app, options& o) {
        o.view_yaw = std::strtod(v[0].c_str(), &end1);
        o.view_pitch = std::strtod(v[1].c_str(), &end2);
        if (*end1 || *end2) throw usage_error{need};
-     })->expected(0, 2)->allow_extra_args(false)->trigger_on_parse();
+     }, "turn the screenshot's view by these degrees (default 0 0)")
+      ->expected(0, 2)->allow_extra_args(false)->trigger_on_parse()->option_text("YAW PITCH")->group("batch");
+  text(app, "--plots", "FILE.csv", "batch",
+       "write what the model recorded with proxy.plot, a column per series (the first: the step)", o.plots_path);
+  with_value(app, "--pick", "LABEL", "batch",
+             "print the vertex with this label (properties, neighbourhood, half-edge records) after the steps; "
+             "repeatable",
+             [&o](const std::string& v) {
+               o.picks.push_back(static_cast<unsigned>(number(v, 1, 0xffffffffull, "--pick needs a vertex label (1 or more)")));
+             });
+  with_value(app, "--step-timeout", "S", "batch", "end a block that runs longer than S seconds, as an error",
+             [&o](const std::string& v) {
+               if (v.empty()) throw usage_error{"--step-timeout needs a number of seconds"};
+               char* end = nullptr;
+               o.step_timeout = std::strtod(v.c_str(), &end);
+               if (*end || !(o.step_timeout > 0) || o.step_timeout > 1e6)
+                 throw usage_error{"--step-timeout needs a number of seconds greater than 0"};
+             });
+  flag(app, "--in-process", "batch",
+       "run the model in this process, unsupervised (a crash then ends the interpreter; for profilers)",
+       o.in_process);
+  flag(app, "--quiet", "batch", "no progress or summary lines", o.quiet);
 }
 
-void model_inputs(CLI::App& app, options& o) {
-  with_value(app, "--set", [&o](const std::string& v) {
-    std::size_t eq = v.find('=');
-    if (eq == std::string::npos || eq == 0) throw usage_error{"--set needs NAME=VALUE, e.g. --set rate=0.5"};
-    o.parameter_values.emplace_back(v.substr(0, eq), v.substr(eq + 1));
+void model_options(CLI::App& app, options& o) {
+  with_value(app, "--set", "NAME=VALUE", "model", "give the parameter NAME (a `param` of the program) this value; repeatable",
+             [&o](const std::string& v) {
+               std::size_t eq = v.find('=');
+               if (eq == std::string::npos || eq == 0) throw usage_error{"--set needs NAME=VALUE, e.g. --set rate=0.5"};
+               o.parameter_values.emplace_back(v.substr(0, eq), v.substr(eq + 1));
+             });
+  with_value(app, "--mesh", "NAME[,NAME]", "model", "the global meshes to export or draw, as one (default: the first)",
+             [&o](const std::string& v) {
+               if (v.empty()) throw usage_error{"--mesh needs a value"};
+               o.meshes.clear();
+               for (std::size_t from = 0, comma; from <= v.size(); from = comma + 1) {
+                 comma = v.find(',', from);
+                 if (comma == std::string::npos) comma = v.size();
+                 if (comma == from) throw usage_error{"--mesh needs names separated by commas, e.g. --mesh J,C"};
+                 o.meshes.push_back(v.substr(from, comma - from));
+               }
+             });
+  with_value(app, "--max-face", "N", "model", "face orbits longer than N are holes, not faces", [&o](const std::string& v) {
+    o.max_face = number(v, 3, ~0ull, "--max-face needs a number of corners (3 or more)");
   });
-  with_value(app, "--mesh", [&o](const std::string& v) {
-    if (v.empty()) throw usage_error{"--mesh needs a value"};
-    o.meshes.clear();
-    for (std::size_t from = 0, comma; from <= v.size(); from = comma + 1) {
-      comma = v.find(',', from);
-      if (comma == std::string::npos) comma = v.size();
-      if (comma == from) throw usage_error{"--mesh needs names separated by commas, e.g. --mesh J,C"};
-      o.meshes.push_back(v.substr(from, comma - from));
-    }
+  with_value(app, "--seed", "S", "model", "seed of the model's random numbers (default 0)", [&o](const std::string& v) {
+    o.seed = number(v, 0, ~0ull, "--seed needs a non-negative number");
   });
-  text(app, "--export", o.export_path);
-  text(app, "--screenshot", o.screenshot);
-  text(app, "--script", o.script);
-  text(app, "--plots", o.plots_path);
-  text(app, "--color-by", o.color_by);
-  text(app, "--frames", o.frames);
-  text(app, "--cache", o.cache);
+  flag(app, "--strict", "model",
+       "reading the old state of a never-synchronised vertex is an error, and a parallel forall runs in order, "
+       "checking that each iteration changes only its own vertex's properties",
+       o.strict);
+  with_value(app, "--threads", "N", "model",
+             "threads of a parallel forall (default: the machine's cores); the results do not depend on it",
+             [&o](const std::string& v) {
+               o.threads = static_cast<unsigned>(number(v, 1, 1024, "--threads needs a number of threads (1 to 1024)"));
+             });
+  flag(app, "--check", "model",
+       "after start and every step, check every global mesh's neighbourhoods and stop at the first broken one, "
+       "naming the line that last edited it",
+       o.check);
+  text(app, "--color-by", "NAME", "model", "colour the drawing by a numeric vertex property (with a colour bar)",
+       o.color_by);
+}
+
+void viewer_options(CLI::App& app, options& o) {
+  text(app, "--script", "FILE", "viewer", "run the commands in FILE, one per line (listed below)", o.script);
+  text(app, "--frames", "DIR", "viewer", "where proxy.record_frame writes frame_NNNNN.png (default ./frames)", o.frames);
+}
+
+void building_options(CLI::App& app, options& o) {
+  text(app, "--cache", "DIR", "building", "compiled models (default $VV_CACHE_DIR or ~/.cache/vv)", o.cache);
+  with_value(app, "--opt", "N", "building", "optimisation level for models (0-3, default 1)", [&o](const std::string& v) {
+    o.optimization = static_cast<int>(number(v, 0, 3, "--opt needs a level from 0 to 3"));
+  });
+  flag(app, "--rebuild", "building",
+       "compile the model even when the cache holds it (batch, --compile-only; the viewer has its Recompile button)",
+       o.rebuild);
+  flag(app, "--debug", "building", "build the model with -g -O0 and run it in this process, for gdb", o.debug);
+}
+
+// Everything the parser knows, in the order --help lists it.
+void register_options(CLI::App& app, options& o, std::vector<std::string>& models) {
+  modes(app, o);
+  batch_options(app, o);
+  model_options(app, o);
+  viewer_options(app, o);
+  building_options(app, o);
+  add_sweep_options(app, o.sweep);  // the section "experiments"
+  answers(app);
+  app.add_option("model", models);
+  app.allow_extras();  // unknown options are named by check_whole
 }
 
 // What the options say together.
@@ -234,22 +252,57 @@ void check_whole(const CLI::App& app, const std::vector<std::string>& models, op
   if (o.batch && !o.script.empty()) throw usage_error{"--script drives the viewer; it cannot be used with --batch"};
   if (o.rebuild && !o.batch && !o.compile_only)
     throw usage_error{"--rebuild is for --batch and --compile-only (the viewer rebuilds with its Recompile button)"};
+  if (!o.batch && (!o.replay.empty() || !o.events_at.empty()))
+    throw usage_error{"--replay, --action and --pick-action are for --batch (the viewer runs a session with --script)"};
+}
+
+// One option's line(s) of the help: its names and value, then what it does,
+// wrapped at 79 columns.
+std::string help_line(const CLI::Option& opt) {
+  std::string names = opt.get_name(false, true);
+  std::string head = "  " + names + (opt.get_option_text().empty() ? "" : " " + opt.get_option_text());
+  const std::size_t indent = 22, width = 79;
+  std::string out = head;
+  std::size_t column = head.size();
+  if (column + 1 >= indent) out += "\n" + std::string(indent, ' '), column = indent;
+  else out += std::string(indent - column, ' '), column = indent;
+  std::string word, what = opt.get_description() + " ";
+  bool first = true;
+  for (char ch : what) {
+    if (ch != ' ') {
+      word += ch;
+      continue;
+    }
+    if (!first && column + 1 + word.size() > width) out += "\n" + std::string(indent, ' '), column = indent, first = true;
+    out += (first ? "" : " ") + word;
+    column += (first ? 0 : 1) + word.size();
+    first = false;
+    word.clear();
+  }
+  return out + "\n";
 }
 
 }  // namespace
+
+std::string usage_text() {
+  CLI::App app("", "vvinterpreter");
+  options o;
+  std::vector<std::string> models;
+  register_options(app, o, models);
+  std::string out = synopsis;
+  for (const char* section : sections) {
+    out += std::string("\n") + section + ":\n";
+    for (const CLI::Option* opt : app.get_options())
+      if (opt->get_group() == section) out += help_line(*opt);
+  }
+  return out;
+}
 
 parse_result parse_options(int argc, const char* const* argv) {
   parse_result r;
   CLI::App app("", "vvinterpreter");
   std::vector<std::string> models;
-  answers(app);
-  switches(app, r.opts);
-  numbers(app, r.opts);
-  view_options(app, r.opts);
-  model_inputs(app, r.opts);
-  add_sweep_options(app, r.opts.sweep);
-  app.add_option("model", models);
-  app.allow_extras();  // unknown options are named below, as before
+  register_options(app, r.opts, models);
   try {
     app.parse(argc, argv);
     check_whole(app, models, r.opts);
@@ -258,9 +311,9 @@ parse_result parse_options(int argc, const char* const* argv) {
     r.ok = r.exit_now = true;
     r.message = a.text;
   } catch (const usage_error& e) {
-    r.message = "vvinterpreter: " + e.message + "\n" + usage_text;
+    r.message = "vvinterpreter: " + e.message + "\n" + usage_text();
   } catch (const CLI::ParseError& e) {
-    r.message = std::string("vvinterpreter: ") + e.what() + "\n" + usage_text;
+    r.message = std::string("vvinterpreter: ") + e.what() + "\n" + usage_text();
   }
   return r;
 }

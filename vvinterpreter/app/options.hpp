@@ -1,46 +1,52 @@
-// The command line (DESIGN.md, "Command-line contracts").
+// The command line (DESIGN.md, "Command-line contracts"). What each option
+// means is said once, where it is registered (options.cpp); --help prints
+// those descriptions.
 #pragma once
 
 #include <cstdint>
 #include <string>
+#include <utility>
 #include <vector>
 
+#include "control/command.hpp"
 #include "experiment/sweep_options.hpp"
 
 namespace vvi {
 
 struct options {
-  std::string model;          // .vvp (or a prebuilt .so)
+  std::string model;
   bool batch = false;
   bool compile_only = false;
   unsigned steps = 0;
-  std::string export_path;    // --export FILE (.vvm .obj .off .ply .stl .vtp)
-  std::vector<std::string> meshes;  // --mesh NAME[,NAME...] (default: the first global mesh)
-  bool end_block = false;     // --end: run the end block after the last step (batch)
-  double step_timeout = 0;    // --step-timeout SECONDS (batch; 0: no limit)
-  bool debug = false;         // --debug: build the model with -g -O0 (batch: in this process)
-  bool in_process = false;    // --in-process: batch without the supervising process
-  std::size_t max_face = 0;   // --max-face N (0: no limit)
-  std::string screenshot;     // --screenshot FILE.png
-  int width = 800, height = 600;  // --size WxH
-  double view_yaw = 0, view_pitch = 0;  // --view YAW PITCH (degrees, batch screenshots)
-  std::uint64_t seed = 0;     // --seed S
-  bool strict = false;        // --strict
-  unsigned threads = 0;       // --threads N (0: the machine's cores)
-  bool check = false;         // --check
-  //! --set NAME=VALUE, in order (NAME, VALUE).
-  std::vector<std::pair<std::string, std::string>> parameter_values;
-  bool list_params = false;   // --list-params
-  std::string plots_path;     // --plots FILE.csv (batch): the proxy.plot series
-  std::vector<unsigned> picks;  // --pick LABEL (batch): describe these vertices
-  std::string color_by;       // --color-by NAME: colour by a numeric vertex property
-  std::string script;         // --script FILE (viewer)
-  std::string frames = "frames";  // --frames DIR (proxy.record_frame)
-  std::string cache;          // --cache DIR
-  int optimization = 1;       // --opt N
-  bool rebuild = false;       // --rebuild: compile even when the cache holds the model (batch, --compile-only)
-  bool quiet = false;         // --quiet: no progress, no summary
-  sweep_options sweep;        // --sweep, --seeds, --jobs, --shard, --out, --merge, --slurm
+  std::string export_path;
+  std::vector<std::string> meshes;
+  bool end_block = false;
+  double step_timeout = 0;
+  bool debug = false;
+  bool in_process = false;
+  std::size_t max_face = 0;
+  std::string screenshot;
+  int width = 800, height = 600;
+  double view_yaw = 0, view_pitch = 0;
+  std::uint64_t seed = 0;
+  bool strict = false;
+  unsigned threads = 0;  // 0: the machine's cores
+  bool check = false;
+  std::vector<std::pair<std::string, std::string>> parameter_values;  // --set, in order
+  bool list_params = false;
+  std::string plots_path;
+  std::vector<unsigned> picks;
+  //! --action NAME@STEP and --pick-action LABEL@STEP, in order: after step STEP.
+  std::vector<std::pair<unsigned long, command>> events_at;
+  std::string replay;
+  std::string color_by;
+  std::string script;
+  std::string frames = "frames";
+  std::string cache;
+  int optimization = 1;
+  bool rebuild = false;
+  bool quiet = false;
+  sweep_options sweep;
 };
 
 struct parse_result {
@@ -51,6 +57,8 @@ struct parse_result {
 };
 
 parse_result parse_options(int argc, const char* const* argv);
-extern const char* usage_text;
+
+//! The usage and every option with what it does (from their registration).
+std::string usage_text();
 
 }  // namespace vvi

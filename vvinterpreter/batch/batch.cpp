@@ -1,18 +1,16 @@
 #include "batch/batch.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <string.h>
-#include <unistd.h>
 
-#include "render/image.hpp"
-#include "render/offscreen.hpp"
+#include "app/files.hpp"
+#include "batch/batch_view.hpp"
+#include "control/command_text.hpp"
+#include "control/model_controller.hpp"
 #include "runner/crash_report.hpp"
-#include "runner/model_runner.hpp"
-#include "runner/output_file.hpp"
-#include "runner/plots.hpp"
 #include "runner/supervisor.hpp"
-#include "render/scene.hpp"
 
 namespace vvi {
 
@@ -28,59 +26,6 @@ void report_build(const options& o, const build_result& b) {
   if (o.quiet) return;
   if (b.cached) std::printf("%s: compiled model found in the cache\n", o.model.c_str());
   else std::printf("%s: translated in %.0f ms, compiled in %.2f s\n", o.model.c_str(), b.translate_ms, b.compile_ms / 1000);
-}
-
-// "step 12/100, 3.4 s" on one line, only when a person watches standard error.
-class progress {
- public:
-  progress(unsigned total, bool quiet) : total_(total), on_(!quiet && isatty(STDERR_FILENO) && total > 1) {}
-  void update(unsigned done) {
-    if (!on_) return;
-    auto now = std::chrono::steady_clock::now();
-    if (done < total_ && now - last_ < std::chrono::milliseconds(100)) return;
-    last_ = now;
-    double s = std::chrono::duration<double>(now - start_).count();
-    std::fprintf(stderr, "\rstep %u/%u, %.1f s", done, total_, s);
-    if (done == total_) std::fprintf(stderr, "\n");
-  }
-
- private:
-  unsigned total_;
-  bool on_;
-  std::chrono::steady_clock::time_point start_ = std::chrono::steady_clock::now(), last_{};
-};
-
-std::string no_such_property(const options& o, const vv_geometry& g) {
-  std::string numeric = g.numeric_fields ? g.numeric_fields : "";
-  return o.model + ": --color-by " + o.color_by + ": the vertices have no numeric property " + o.color_by +
-         (numeric.empty() ? " (they have none)" : " (they have " + numeric + ")");
-}
-
-std::string screenshot(const options& o, model_runner& runner) {
-  std::string error;
-  std::unique_ptr<offscreen> gl = offscreen::create(o.width, o.height, error);
-  if (!gl) return error;
-  session* model = runner.model();
-  if (model) model->announce_drawing(true);  // its render blocks are supervised like the others
-  if (!init_rendering(model, error)) return error;
-  mesh_drawing drawing;  // drawn unless the model draws itself; its bounds fit the view
-  vv_geometry g{};
-  error = runner.geometry(g, o.color_by);
-  if (!error.empty()) return error;
-  if (!o.color_by.empty() && !g.values) return no_such_property(o, g);
-  if (!g.positions && !(model && model->has_block(&vv_plugin::render)))
-    return o.screenshot + ": nothing to draw: the vertices of the model's mesh have no 'pos' property "
-                          "(give them one, or draw them in a render block)";
-  drawing.update(g);
-  camera cam;
-  cam.fit(view_box(model, &drawing));
-  cam.rotate_degrees(o.view_yaw, o.view_pitch);
-  if (!draw_frame(model, &drawing, cam, o.width, o.height, error)) return error;
-  std::vector<std::uint8_t> pixels = read_pixels(o.width, o.height);
-  std::string written =
-      write_output(o.screenshot, [&](const std::string& to) { return write_png(to, o.width, o.height, pixels); });
-  drawing.release();
-  return written;
 }
 
 // --list-params: the parameters as the file and --set give them, before
@@ -99,50 +44,95 @@ int list_parameters(const options& o, const build_result& b) {
   return 0;
 }
 
+// --replay FILE: the session's events, after the values of --set.
+bool read_session(const options& o, event_log& log, std::string& error) {
+  log.initial.clear();
+  for (const auto& [name, text] : o.parameter_values) set_setting(log.initial, name, text);
+  if (o.replay.empty()) return true;
+  std::optional<std::string> text = read_file(o.replay);
+  if (!text) return error = o.replay + ": cannot read the session", false;
+  event_log session;
+  if (!event_log::parse(*text, o.replay, session, error)) return false;
+  for (const parameter_setting& s : session.initial) set_setting(log.initial, s.name, s.text);
+  log.events = session.events;
+  return true;
+}
+
+// The batch run's commands, one after another; "" or why the run ends.
+class batch_run {
+ public:
+  batch_run(model_controller& c, batch_view& v) : c_(c), v_(v) {}
+  std::string operator()(const command& cmd) {
+    c_.submit(cmd);
+    c_.poll(0);
+    return c_.failed() ? c_.failure() : v_.failure();
+  }
+
+ private:
+  model_controller& c_;
+  batch_view& v_;
+};
+
+// The steps, with --action and --pick-action after the steps they name.
+std::string run_steps(const options& o, model_controller& c, batch_run& run, double& seconds) {
+  unsigned long first = c.facts().steps, last = first + o.steps;
+  std::vector<std::pair<unsigned long, command>> events = o.events_at;
+  std::stable_sort(events.begin(), events.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+  for (const auto& [step, event] : events)
+    if (step < first || step > last)
+      return "--" + std::string(event.kind == command::action ? "action " + event.name : "pick-action " +
+                                std::to_string(event.number)) + "@" + std::to_string(step) +
+             ": the run goes from step " + std::to_string(first) + " to step " + std::to_string(last);
+  seconds = 0;
+  auto steps_to = [&](unsigned long target) -> std::string {
+    unsigned long now = c.facts().steps;
+    if (target <= now) return "";
+    auto t0 = std::chrono::steady_clock::now();
+    std::string e = run(command::steps(target - now));
+    seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    return e;
+  };
+  for (const auto& [step, event] : events) {
+    if (std::string e = steps_to(step); !e.empty()) return e;
+    if (std::string e = run(event); !e.empty()) return e;
+  }
+  return steps_to(last);
+}
+
 // The batch run itself, in the supervised child process.
 int run_model_headless(const options& o) {
-  model_runner runner(o);
-  build_result b = runner.build(false);
+  inline_jobs jobs;
+  batch_view view(o);
+  model_controller c(o, jobs, view, {}, controller_policy{false});
+  view.attach(c);
+  build_result b = c.runner().build(false);
   if (!b.ok) return fail(b.error);
   if (o.list_params) return list_parameters(o, b);
   report_build(o, b);
-  if (!runner.load(b.plugin)) return fail(runner.error());
-  progress bar(o.steps, o.quiet);
-  auto t0 = std::chrono::steady_clock::now();
-  for (unsigned i = 0; i < o.steps; ++i) {
-    if (!runner.step()) return fail(runner.error());
-    bar.update(i + 1);
-  }
-  double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  if (o.end_block && !runner.end()) return fail(runner.error());
-  session& model = *runner.model();
+  event_log log;
+  std::string error;
+  if (!read_session(o, log, error)) return fail(error);
+  c.load_build(b, log);
+  c.poll(0);
+  if (c.failed()) return fail(c.failure());
+  view.count_steps_from(c.facts().steps);
+  batch_run run(c, view);
+  double seconds = 0;
+  if (std::string e = run_steps(o, c, run, seconds); !e.empty()) return fail(e);
+  if (o.end_block)
+    if (std::string e = run(command::of(command::end)); !e.empty()) return fail(e);
   if (!o.quiet) {
     std::printf("%u steps in %.3f s\n", o.steps, seconds);
-    for (const vv_mesh_entry* mesh : model.meshes()) std::printf("mesh %s: %zu vertices\n", mesh->name, mesh->vertex_count());
+    for (const auto& [name, vertices] : c.facts().meshes) std::printf("mesh %s: %zu vertices\n", name.c_str(), vertices);
   }
-  if (!o.export_path.empty()) {
-    std::string e = runner.export_to(o.export_path);
-    if (!e.empty()) return fail(e);
-    if (!o.quiet) std::printf("wrote %s\n", o.export_path.c_str());
-  }
-  for (unsigned label : o.picks) {
-    std::string text;
-    std::string e = runner.describe_vertex(label, text);
-    if (!e.empty()) return fail(e);
-    std::printf("%s", text.c_str());
-  }
-  if (!o.plots_path.empty()) {
-    std::string e = write_plots(o.plots_path, model.plots());
-    if (!e.empty()) return fail(e);
-    if (!o.quiet) std::printf("wrote %s\n", o.plots_path.c_str());
-  }
-  if (!o.screenshot.empty()) {
-    std::string e = screenshot(o, runner);
-    if (!e.empty()) return fail(e);
-    if (!o.quiet) std::printf("wrote %s\n", o.screenshot.c_str());
-  }
-  runner.close();
-  if (!runner.error().empty()) return fail(runner.error());
+  std::vector<command> outputs;
+  if (!o.export_path.empty()) outputs.push_back(command::with_path(command::export_mesh, o.export_path));
+  for (unsigned label : o.picks) outputs.push_back(command::labelled(command::inspect, label));
+  if (!o.plots_path.empty()) outputs.push_back(command::with_path(command::plots, o.plots_path));
+  if (!o.screenshot.empty()) outputs.push_back(command::with_path(command::screenshot, o.screenshot));
+  for (const command& out : outputs)
+    if (std::string e = run(out); !e.empty()) return fail(e);
+  if (std::string e = c.close_model(); !e.empty()) return fail(e);
   return 0;
 }
 
@@ -152,9 +142,16 @@ void tell_long_activity(const options& o, const long_activity& a) {
   std::fflush(stderr);
 }
 
-int report_end(const crash_text& t) {
-  std::fprintf(stderr, "vvinterpreter: %s\n%s", t.line.c_str(), t.stack.c_str());
+int report_end(const crash_text& t, const std::string& replay_note) {
+  std::fprintf(stderr, "vvinterpreter: %s%s\n%s", t.line.c_str(), replay_note.c_str(), t.stack.c_str());
   return 1;
+}
+
+// A run that died while it replayed a session: the event it stopped at.
+std::string replay_note(const options& o, const state_record& r) {
+  if (r.replaying < 0 || static_cast<std::size_t>(r.replaying) >= r.log.events.size()) return "";
+  return " (replaying event " + std::to_string(r.replaying + 1) + " of " + std::to_string(r.log.events.size()) +
+         " of " + o.replay + ": " + command_text(r.log.events[static_cast<std::size_t>(r.replaying)]) + ")";
 }
 
 }  // namespace
@@ -181,6 +178,8 @@ int run_batch(const options& o) {
   s.activity_timeout = o.step_timeout;
   s.notice_after = seconds_from_environment("VV_NOTICE_AFTER", 10);
   s.on_long_activity = [&](const long_activity& a) { tell_long_activity(o, a); };
+  state_record heard;
+  s.on_line = [&](const std::string& line) { read_record_line(line, heard); };
   child_end end = run_supervised([&] { return run_model_headless(o); }, s);
   int status = end.exit_code;
   if (end.kind == child_end::interrupted) {
@@ -190,9 +189,9 @@ int run_batch(const options& o) {
   } else if (end.kind == child_end::exited) {
     // Inside a block the model ended the process itself: its steps and
     // files are missing, whatever the status said.
-    if (!end.activity.what.empty()) status = report_end(describe_exit(end, o.model));
+    if (!end.activity.what.empty()) status = report_end(describe_exit(end, o.model), replay_note(o, heard));
   } else {
-    status = report_end(describe_crash(end, o.model));
+    status = report_end(describe_crash(end, o.model), replay_note(o, heard));
   }
   remove_module_copies(end);
   return status;

@@ -5,6 +5,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <optional>
 #include <sstream>
 
 #include "app/files.hpp"
@@ -155,38 +156,63 @@ std::string first_error(const std::string& details) {
   return "";
 }
 
-build_result build_unguarded(const std::string& path, const build_settings& s) {
-  build_result r;
-  if (is_plugin_file(path)) {  // a prebuilt plugin
-    r.ok = true;
-    r.plugin = fs::absolute(path).string();
-    r.cached = true;
-    return r;
-  }
+// One build of a .vvp, phase by phase (build_unguarded runs them in
+// order). A phase either ends the build, with its result (found in the
+// cache, or an error), or leaves in the members what the next one needs.
+struct model_builder {
+  model_builder(const std::string& typed, const build_settings& settings) : path(typed), s(settings), where(typed) {}
 
-  model_path where(path);
+  std::optional<build_result> translate();
+  void name_the_build();
+  std::optional<build_result> find_in_cache();
+  std::optional<build_result> prepare_work();
+  build_result compile_and_store();
+
+  const std::string& path;
+  const build_settings& s;
+  build_result r;
+  model_path where;
+  vvc::translation t;
+  std::string include, stamp, model_dir, key, plugins;
+  std::vector<std::string> flags;
+  std::string notes;  // what was found broken in the cache and rebuilt, a line each
+  header_request header;
+  std::string pch, damage, header_error;
+  std::string work;  // the folder the build is made in, before it is published
+  std::chrono::steady_clock::time_point t1;
+};
+
+// The program in C++, with the files it was read from.
+std::optional<build_result> model_builder::translate() {
   auto t0 = std::chrono::steady_clock::now();
   std::string unreadable;
-  vvc::translation t = vvc::translate_file(where.built(), &unreadable);
+  t = vvc::translate_file(where.built(), &unreadable);
   r.translate_ms = ms_since(t0);
   if (!t.ok) return translation_failed(path);
   for (const std::string& source : t.sources.paths()) r.sources.push_back(where.shown(source));
+  return std::nullopt;
+}
 
-  std::string include = vvlib_include_dir();
-  std::string stamp = headers_stamp(include);
-  std::vector<std::string> flags = common_flags(s, include);
-  std::string model_dir = absolute_folder_of(where.built());
-  std::string key = content_hash()
-                        .add(vvc::version())
-                        .add(config::cxx_compiler)
-                        .add(join(flags))
-                        .add(config::model_link_flags)
-                        .add(stamp)
-                        .add(model_dir)
-                        .add(t.cpp)
-                        .hex();
-  std::string plugins = s.cache_dir + "/plugins";
-  std::string notes;  // what was found broken in the cache and rebuilt, a line each
+// The cache key: everything that goes into the plugin.
+void model_builder::name_the_build() {
+  include = vvlib_include_dir();
+  stamp = headers_stamp(include);
+  flags = common_flags(s, include);
+  model_dir = absolute_folder_of(where.built());
+  key = content_hash()
+            .add(vvc::version())
+            .add(config::cxx_compiler)
+            .add(join(flags))
+            .add(config::model_link_flags)
+            .add(stamp)
+            .add(model_dir)
+            .add(t.cpp)
+            .hex();
+  plugins = s.cache_dir + "/plugins";
+}
+
+// A whole build under the key, none of whose own headers changed.
+std::optional<build_result> model_builder::find_in_cache() {
   std::error_code ec;
   if (!s.force) {
     // The build the key names now, resolved once: a rebuild may replace it.
@@ -209,23 +235,35 @@ build_result build_unguarded(const std::string& path, const build_settings& s) {
       fs::remove_all(entry, ec);
     }
   }
+  return std::nullopt;
+}
 
+// The precompiled vvlib header, and a work folder holding the C++.
+std::optional<build_result> model_builder::prepare_work() {
   if (s.compiling) s.compiling();
-  auto t1 = std::chrono::steady_clock::now();
-  header_request header{s.cache_dir, include, flags,
-                        content_hash().add(config::cxx_compiler).add(join(flags)).add(stamp).hex()};
-  std::string damage, header_error;
-  std::string pch = precompiled_header_dir(header, damage, header_error);
+  t1 = std::chrono::steady_clock::now();
+  header = header_request{s.cache_dir, include, flags,
+                          content_hash().add(config::cxx_compiler).add(join(flags)).add(stamp).hex()};
+  pch = precompiled_header_dir(header, damage, header_error);
   if (!damage.empty())
     notes += path + ": note: the cached precompiled vvlib header was damaged (" + damage + "); it was built again\n";
+  std::error_code ec;
   fs::create_directories(plugins, ec);
   cache::remove_leftovers(plugins);
-  std::string work = plugins + "/tmp-" + key + "-" + cache::unique_id();
+  work = plugins + "/tmp-" + key + "-" + cache::unique_id();
   fs::create_directories(work, ec);
   if (ec || !write_file(work + "/model.cpp", t.cpp)) {
     fs::remove_all(work, ec);
     return failed(plugins, "cannot write to the model cache");
   }
+  return std::nullopt;
+}
+
+// The compiler (once more when the precompiled header proves unreadable),
+// its messages in the program's terms, and the build published in the
+// cache.
+build_result model_builder::compile_and_store() {
+  std::error_code ec;
   // The polygon formats come compiled, from vv_formats (M.readFile("x.obj")).
   std::string lib = vvlib_library_dir();
   compile_job job;
@@ -295,6 +333,22 @@ build_result build_unguarded(const std::string& path, const build_settings& s) {
   r.warnings = notes + where.shown_in(about_model);
   for (const std::string& h : dependency_paths(deps)) r.sources.push_back(h);
   return r;
+}
+
+build_result build_unguarded(const std::string& path, const build_settings& s) {
+  if (is_plugin_file(path)) {  // a prebuilt plugin
+    build_result r;
+    r.ok = true;
+    r.plugin = fs::absolute(path).string();
+    r.cached = true;
+    return r;
+  }
+  model_builder b(path, s);
+  if (std::optional<build_result> done = b.translate()) return *done;
+  b.name_the_build();
+  if (std::optional<build_result> done = b.find_in_cache()) return *done;
+  if (std::optional<build_result> done = b.prepare_work()) return *done;
+  return b.compile_and_store();
 }
 
 }  // namespace

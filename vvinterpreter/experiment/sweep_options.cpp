@@ -23,10 +23,19 @@ unsigned count_of(const std::string& v, unsigned long lo, unsigned long hi, cons
   return static_cast<unsigned>(n);
 }
 
+// The section of --help these options are listed in.
+const char* const section = "experiments";
+
 // One value per occurrence, in command-line order; a missing value reaches
-// `take` as "" so that each option says what it needs.
-void with_value(CLI::App& app, const std::string& name, std::function<void(const std::string&)> take) {
-  app.add_option_function<std::string>(name, std::move(take))->expected(0, 1)->trigger_on_parse();
+// `take` as "" so that each option says what it needs. `value` and `what`
+// are its line in --help.
+void with_value(CLI::App& app, const std::string& name, const std::string& value, const std::string& what,
+                std::function<void(const std::string&)> take) {
+  app.add_option_function<std::string>(name, std::move(take), what)
+      ->expected(0, 1)
+      ->trigger_on_parse()
+      ->option_text(value)
+      ->group(section);
 }
 
 // I/N with 1 <= I <= N.
@@ -47,31 +56,46 @@ void read_shard(const std::string& v, sweep_options& s) {
 }  // namespace
 
 void add_sweep_options(CLI::App& app, sweep_options& s) {
-  with_value(app, "--sweep", [&s](const std::string& v) {
-    if (v.empty()) refuse("--sweep needs NAME=V1,V2,... or NAME=LO:HI:COUNT, e.g. --sweep rate=0.1,0.2");
-    s.sweeps.push_back(v);  // read in full by the sweep's plan, which names what is wrong
-  });
-  with_value(app, "--seeds", [&s](const std::string& v) {
+  with_value(app, "--sweep", "NAME=V1,V2,...",
+             "run the model for each value of the parameter NAME, or NAME=LO:HI:COUNT for COUNT values from LO "
+             "to HI; repeatable (every combination runs)",
+             [&s](const std::string& v) {
+               if (v.empty()) refuse("--sweep needs NAME=V1,V2,... or NAME=LO:HI:COUNT, e.g. --sweep rate=0.1,0.2");
+               s.sweeps.push_back(v);  // read in full by the sweep's plan, which names what is wrong
+             });
+  with_value(app, "--seeds", "K", "run each combination with the seeds 1 to K", [&s](const std::string& v) {
     s.seeds = count_of(v, 1, 1000000, "--seeds needs a number of seeds from 1 to 1000000 (the runs use seeds 1 to K)");
   });
-  with_value(app, "--jobs", [&s](const std::string& v) {
-    s.jobs = count_of(v, 1, 4096, "--jobs needs a number of runs at a time from 1 to 4096");
-  });
-  with_value(app, "--slurm", [&s](const std::string& v) {
-    s.slurm = count_of(v, 1, 100000, "--slurm needs the number of shards (array tasks) from 1 to 100000");
-  });
-  with_value(app, "--shard", [&s](const std::string& v) { read_shard(v, s); });
-  with_value(app, "--out", [&s](const std::string& v) {
-    if (v.empty()) refuse("--out needs a folder");
-    s.out = v;
-  });
-  app.add_option_function<std::vector<std::string>>("--merge", [&s](const std::vector<std::string>& dirs) {
-       if (dirs.empty()) refuse("--merge needs the folders of the shards to merge, e.g. --merge a b --out all");
-       for (const std::string& d : dirs) {
-         if (d.empty()) refuse("--merge needs the folders of the shards to merge, e.g. --merge a b --out all");
-         s.merge.push_back(d);
-       }
-     })->expected(0, -1)->trigger_on_parse();
+  with_value(app, "--jobs", "J", "runs at a time, each in its own process (default: the cores)",
+             [&s](const std::string& v) {
+               s.jobs = count_of(v, 1, 4096, "--jobs needs a number of runs at a time from 1 to 4096");
+             });
+  with_value(app, "--out", "DIR", "the sweep's folder: run-NNNN/ per run, runs.csv, failed.csv",
+             [&s](const std::string& v) {
+               if (v.empty()) refuse("--out needs a folder");
+               s.out = v;
+             });
+  with_value(app, "--shard", "I/N", "run only every N-th run from run I (a cluster's job array)",
+             [&s](const std::string& v) { read_shard(v, s); });
+  with_value(app, "--slurm", "N",
+             "write (and submit with sbatch) a Slurm job array of N shards and a job that merges them into DIR",
+             [&s](const std::string& v) {
+               s.slurm = count_of(v, 1, 100000, "--slurm needs the number of shards (array tasks) from 1 to 100000");
+             });
+  app.add_option_function<std::vector<std::string>>(
+         "--merge",
+         [&s](const std::vector<std::string>& dirs) {
+           if (dirs.empty()) refuse("--merge needs the folders of the shards to merge, e.g. --merge a b --out all");
+           for (const std::string& d : dirs) {
+             if (d.empty()) refuse("--merge needs the folders of the shards to merge, e.g. --merge a b --out all");
+             s.merge.push_back(d);
+           }
+         },
+         "join shard folders of one sweep into --out DIR")
+      ->expected(0, -1)
+      ->trigger_on_parse()
+      ->option_text("DIR...")
+      ->group(section);
 }
 
 std::string check_sweep_options(const sweep_options& s, bool model_given) {

@@ -9,6 +9,7 @@
 #include <sstream>
 
 #include "compile/process.hpp"
+#include "runner/report_words.hpp"
 
 namespace vvi {
 
@@ -267,7 +268,7 @@ crash_text describe_stop(const child_end& end, const std::string& model) {
 
 crash_text describe_exit(const child_end& end, const std::string& model) {
   std::string status = std::to_string(end.exit_code), activity = activity_phrase(end.activity);
-  if (end.sample.why == "exit")
+  if (end.sample.why == report_words::exit_call)
     return from_sample(end, model, "the model called exit(" + status + ") " + activity + ", before the run was done");
   crash_text t;  // _exit: no handler ran, so no line
   t.line = t.panel =
@@ -285,7 +286,7 @@ std::string describe_long_activity(const long_activity& a, const std::string& mo
 }
 
 std::string stopped_place(const child_end& end, const std::string& model) {
-  if (end.sample.why != "running") return model;
+  if (end.sample.why != report_words::running) return model;
   return place(model_stack(end.sample, end.modules), model);
 }
 

@@ -18,7 +18,11 @@
 #include <exception>
 #include <typeinfo>
 
+#include "runner/report_words.hpp"
+
 namespace vvi::fault_guard {
+
+namespace words = report_words;
 
 namespace {
 
@@ -115,7 +119,7 @@ void send_maps(char (&buffer)[N]) {
     if (eol) *eol = '\0';
     if (std::strchr(at, '/')) {
       line l;
-      (l << "map " << at).send();
+      (l << words::map << " " << at).send();
     }
     at = eol ? eol + 1 : at + std::strlen(at);
   }
@@ -125,7 +129,7 @@ void send_frames() {
   void* frames[64];
   int n = backtrace(frames, 64);
   line l;
-  for (int i = 0; i < n; ++i) (l << "frame ").number(reinterpret_cast<std::uintptr_t>(frames[i]), 16).send();
+  for (int i = 0; i < n; ++i) (l << words::frame << " ").number(reinterpret_cast<std::uintptr_t>(frames[i]), 16).send();
 }
 
 std::uintptr_t fault_pc(void* context) {
@@ -151,13 +155,13 @@ void on_fatal(int sig, siginfo_t*, void* context) {
   flush_unlocked(stderr);
   if (report >= 0) {
     line l;
-    (l << "crash " << signal_name(sig)).send();
-    if (activity[0]) (l << "activity " << activity << " ").number(activity_step, 10).send();
-    if (exception_text[0]) (l << "exception " << exception_text).send();
-    (l << "pc ").number(fault_pc(context), 16).send();
+    (l << words::crash << " " << signal_name(sig)).send();
+    if (activity[0]) (l << words::activity << " " << activity << " ").number(activity_step, 10).send();
+    if (exception_text[0]) (l << words::exception << " " << exception_text).send();
+    (l << words::pc << " ").number(fault_pc(context), 16).send();
     send_frames();
     send_maps(maps_buffer);
-    (l << "end").send();
+    (l << words::end).send();
   }
   signal(sig, SIG_DFL);  // the signal is blocked here: it kills us on return
   raise(sig);
@@ -183,13 +187,13 @@ void on_sample(int sig, siginfo_t* info, void* context) {
       flush_unlocked(stderr);
     }
     line l;
-    (l << "sample " << (target ? "running " : "idle ")).number(static_cast<unsigned>(sample_number), 10).send();
+    (l << words::sample << " " << (target ? words::running : words::idle) << " ").number(static_cast<unsigned>(sample_number), 10).send();
     if (target) {
-      (l << "pc ").number(fault_pc(context), 16).send();
+      (l << words::pc << " ").number(fault_pc(context), 16).send();
       send_frames();
       send_maps(sample_maps_buffer);
     }
-    (l << "end").send();
+    (l << words::end).send();
     samples_sent = samples_sent + 1;
     // The supervisor ends the process now: the model must not go on (and
     // finish, or print) in the meantime.
@@ -206,10 +210,10 @@ void on_exit_call() {
   if (activity_thread == 0 || report < 0) return;
   flush_unlocked(stdout);
   line l;
-  (l << "sample exit").send();
+  (l << words::sample << " " << words::exit_call).send();
   send_frames();
   send_maps(sample_maps_buffer);
-  (l << "end").send();
+  (l << words::end).send();
 }
 
 // A termination signal (the supervisor went, Ctrl-C) ends the process as
@@ -304,8 +308,8 @@ void begin(const char* what, unsigned step, bool announce) {
   if (announce && report >= 0) {
     activity_thread = thread_id();
     line l;
-    (l << "begin " << what << " ").number(step, 10).send();
-    (l << "thread ").number(static_cast<unsigned long long>(activity_thread), 10).send();
+    (l << words::begin << " " << what << " ").number(step, 10).send();
+    (l << words::thread << " ").number(static_cast<unsigned long long>(activity_thread), 10).send();
   }
 }
 
@@ -313,7 +317,7 @@ void finish(bool announce) {
   if (announce && report >= 0) {
     activity_thread = 0;
     line l;
-    (l << "done " << activity << " ").number(activity_step, 10).send();
+    (l << words::done << " " << activity << " ").number(activity_step, 10).send();
   }
   activity[0] = '\0';
   activity_step = 0;
@@ -344,17 +348,17 @@ void note_writing(const std::string& temporary, const std::string& target) {
       }
       break;
     }
-  send("writing " + temporary + "\t" + target);
+  send(std::string(words::writing) + " " + temporary + "\t" + target);
 }
 
 void note_written(const std::string& temporary) {
   for (auto& slot : writing)
     if (temporary == slot) slot[0] = '\0';
-  send("written " + temporary);
+  send(std::string(words::written) + " " + temporary);
 }
 
 void note_module(const std::string& loaded, const std::string& original) {
-  send("module " + loaded + "\t" + original);
+  send(std::string(words::module) + " " + loaded + "\t" + original);
 }
 
 void send(const std::string& text) {

@@ -77,6 +77,9 @@ class model_runner {
   std::string set_parameter(const std::string& name, const std::string& text);
   //! The values the user gave (--set, set_parameter), kept across reloads.
   const std::vector<parameter_setting>& parameter_settings() const { return settings_; }
+  //! The values the next fresh instance starts with instead (an event
+  //! log's: control/event_log.hpp).
+  void use_settings(std::vector<parameter_setting> settings) { settings_ = std::move(settings); }
 
   //! Set from another thread to end a run-up (load with steps) between steps.
   std::atomic<bool> cancel{false};

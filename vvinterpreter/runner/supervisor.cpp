@@ -22,6 +22,8 @@
 #include "runner/fault_guard.hpp"
 #include "runner/oom_kills.hpp"
 #include "runner/report_reader.hpp"
+#include "runner/report_words.hpp"
+#include "runner/thread_state.hpp"
 
 namespace vvi {
 
@@ -75,35 +77,6 @@ class supervisor_signals {
   struct sigaction old_[count];
   sigset_t blocked_before_, waiting_mask_;
 };
-
-// Whether a signal to this thread of the child leaves what the model does
-// as it was: the thread runs, or waits in a system call that the kernel
-// restarts after the handler (SA_RESTART), not one a signal cuts short (a
-// sleep, a poll: the model would see them end early).
-bool safe_to_sample(pid_t pid, pid_t thread) {
-  if (thread <= 0) return false;
-  std::string task = "/proc/" + std::to_string(pid) + "/task/" + std::to_string(thread);
-  std::ifstream calls(task + "/syscall");
-  std::string first;
-  if (calls >> first) {
-    if (first == "running") return true;
-    static const long restarted[] = {
-        SYS_read,  SYS_write,  SYS_readv,  SYS_writev, SYS_pread64, SYS_pwrite64, SYS_openat,
-        SYS_wait4, SYS_waitid, SYS_flock,  SYS_fcntl,  SYS_ioctl,   SYS_futex,
-#ifdef SYS_open
-        SYS_open,
-#endif
-    };
-    long number = std::strtol(first.c_str(), nullptr, 10);
-    return std::find(std::begin(restarted), std::end(restarted), number) != std::end(restarted);
-  }
-  // Not allowed to look at its system call: only a running thread is safe.
-  std::ifstream stat(task + "/stat");
-  std::string text;
-  std::getline(stat, text);
-  std::size_t paren = text.rfind(')');
-  return paren != std::string::npos && paren + 2 < text.size() && text[paren + 2] == 'R';
-}
 
 // How long the child may take to answer a request for its stack (it takes
 // milliseconds; a loaded machine may hold it up).
@@ -244,7 +217,7 @@ class watch {
     a.activity = notice_activity_;
     a.seconds = notice_seconds_;
     a.waiting = waiting;
-    a.sample = !waiting && reader_.sample_arrived && end_.sample.why == "running" ? &end_.sample : nullptr;
+    a.sample = !waiting && reader_.sample_arrived && end_.sample.why == report_words::running ? &end_.sample : nullptr;
     a.modules = &end_.modules;
     reader_.sample_arrived = false;
     s_.on_long_activity(a);

@@ -26,9 +26,8 @@ long inspection::index_of(unsigned label) const {
   return -1;
 }
 
-void inspection::pick_index(long index) {
-  if (index < 0 || std::size_t(index) >= labels_.size()) return clear();
-  picked_label_ = labels_[std::size_t(index)];
+unsigned inspection::label_of(long index) const {
+  return index < 0 || std::size_t(index) >= labels_.size() ? 0 : labels_[std::size_t(index)];
 }
 
 std::string inspection::describe(const model_runner& runner) {

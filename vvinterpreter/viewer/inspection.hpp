@@ -25,9 +25,9 @@ class inspection {
   const mesh_counts& counts() const { return counts_; }
   const std::vector<std::string>& numeric_fields() const { return numeric_fields_; }
 
-  //! Picks the vertex at this index of the drawing (-1: none).
-  void pick_index(long index);
-  //! Picks by label (script `pick LABEL`); described by describe().
+  //! The label of the vertex at this index of the drawing (-1: 0, none).
+  unsigned label_of(long index) const;
+  //! Picks by label (`pick LABEL`, Ctrl+click); described by describe().
   void pick_label(unsigned label) { picked_label_ = label; }
   void clear() { picked_label_ = 0, text_.clear(), picked_index_ = -1, neighbours_.clear(); }
   unsigned picked_label() const { return picked_label_; }

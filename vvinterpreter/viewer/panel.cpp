@@ -47,39 +47,49 @@ panel_actions draw_panel_once(const panel_state& s, bool& changed_size) {
   ImGui::TextUnformatted(s.model.c_str());
   ImGui::TextDisabled("%s", s.status.c_str());
   ImGui::Separator();
+  auto button = [&a](const char* label, command::kind_t k) {
+    if (ImGui::Button(label)) a.add(command::of(k));
+  };
   if (!s.running.empty()) {
     ImGui::TextColored(ImVec4(0.8f, 0.45f, 0.0f, 1), "%s", s.running.c_str());
-    a.stop = ImGui::Button("Stop (Esc)");
+    button("Stop (Esc)", command::stop);
     ImGui::SameLine();
     ImGui::TextDisabled("restarts the model");
     ImGui::Separator();
   }
   bool disabled = !s.has_model || s.busy;
   if (disabled) ImGui::BeginDisabled();
-  a.step = ImGui::Button("Step");
+  button("Step", command::step);
   ImGui::SameLine();
-  a.run = ImGui::Button(("Run " + std::to_string(s.run_steps)).c_str());
+  button(("Run " + std::to_string(s.run_steps)).c_str(), command::run);
   ImGui::SameLine();
   if (s.animating) {
-    a.stop = ImGui::Button("Stop");
+    button("Stop", command::stop);
   } else {
     if (!s.can_animate) ImGui::BeginDisabled();
-    a.animate = ImGui::Button("Animate");
+    button("Animate", command::animate);
     if (!s.can_animate) ImGui::EndDisabled();
   }
-  a.rewind = ImGui::Button("Rewind");
+  button("Rewind", command::rewind);
   ImGui::SameLine();
-  a.end = ImGui::Button("End");
+  button("End", command::end);
   ImGui::SameLine();
-  a.reread = ImGui::Button("Reread files");
+  button("Reread files", command::reread);
   if (disabled) ImGui::EndDisabled();
-  a.recompile = ImGui::Button("Recompile");
+  button("Recompile", command::recompile);
   ImGui::SameLine();
-  a.fit = ImGui::Button("Fit view");
+  button("Fit view", command::fit);
   ImGui::SameLine();
-  a.screenshot = ImGui::Button("Screenshot");
+  button("Screenshot", command::screenshot);
+  ImGui::SameLine();
+  if (disabled) ImGui::BeginDisabled();
+  button("Save session", command::save_session);
+  if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled))
+    ImGui::SetTooltip("write what was done to the model, for --replay");
+  if (disabled) ImGui::EndDisabled();
   bool replay = s.replay;
-  if (ImGui::Checkbox("After a reload or restart, run again to the step", &replay)) a.toggle_replay = true;
+  if (ImGui::Checkbox("After a reload or restart, run again to the step", &replay))
+    a.add(command::switched(command::replay, "", replay));
   ImGui::Separator();
   ImGui::Text("step %u", s.steps);
   if (s.steps > 0) ImGui::Text("last step: %.2f ms", s.last_step_ms);
@@ -93,12 +103,14 @@ panel_actions draw_panel_once(const panel_state& s, bool& changed_size) {
   }
   if (!s.warnings.empty() && ImGui::CollapsingHeader("Compiler warnings")) ImGui::TextWrapped("%s", s.warnings.c_str());
   draw_inspector(s, a);
+  draw_actions(s, a);
   draw_parameters(s, a);
   draw_plots(s);
   draw_display(s, a);
   ImGui::Separator();
   ImGui::TextDisabled("drag: rotate   right-drag: pan   wheel: zoom");
   ImGui::TextDisabled("space: step  a: animate  w: rewind  f: fit  s: screenshot");
+  ImGui::TextDisabled("shift+click: the model's pick block on a vertex");
   ImGui::TextDisabled("ctrl+click: pick a vertex  esc: stop  ctrl+q: quit");
   changed_size = content_changed_size();
   ImGui::End();

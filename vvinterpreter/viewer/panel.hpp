@@ -1,9 +1,9 @@
-// The viewer's control panel (Dear ImGui): buttons in, actions out. It
-// only shows state; the viewer decides what the actions do.
+// The viewer's control panel (Dear ImGui): the model's state in, commands
+// out (control/command.hpp), which the viewer gives its model controller.
 //
 // Its layout: the model's state and buttons, then the picked vertex (when
 // there is one: near the top, so a pick is always in view), then the
-// sections Parameters, Plots and Display, each folding away. The panel is
+// sections Actions, Parameters, Plots and Display, each folding away. The panel is
 // never taller than the window; what does not fit scrolls.
 #pragma once
 
@@ -11,27 +11,12 @@
 #include <utility>
 #include <vector>
 
+#include "control/command.hpp"
+#include "control/model_facts.hpp"
 #include "render/scene.hpp"
 #include "runner/mesh_counts.hpp"
 
 namespace vvi {
-
-//! A parameter as the panel shows it.
-struct parameter_view {
-  std::string name, type, text;  //!< text: the value as it reads back exactly
-  double number = 0;             //!< the value (bool: 0 or 1)
-  bool has_range = false;
-  double lo = 0, hi = 0;
-  int line = 0;
-};
-
-//! A proxy.plot series: its values in the order of the steps recorded.
-struct plot_view {
-  std::string name;
-  std::vector<float> values;
-  unsigned first_step = 0, last_step = 0;
-  double last = 0;
-};
 
 struct panel_state {
   std::string model;
@@ -63,25 +48,20 @@ struct panel_state {
   std::string picked;  // the picked vertex described, or ""
   unsigned picked_label = 0;  // a new label opens the inspector again
   std::vector<std::string> file_objects;  // files the model reads, reread on save
+  std::vector<action_view> actions;       // the program's, a button each
 };
 
 struct panel_actions {
-  bool step = false, run = false, animate = false, stop = false, rewind = false, end = false;
-  bool reread = false, recompile = false, fit = false, screenshot = false;
-  bool toggle_replay = false;
-  std::vector<std::pair<std::string, std::string>> set_parameters;  // name, text
-  bool save_parameters = false, toggle_rewind_on_change = false;
-  bool style_changed = false;
-  display_style style;           // valid when style_changed
-  bool toggle_auto_fit = false;
-  bool color_by_changed = false;
-  std::string color_by;          // valid when color_by_changed
-  bool clear_pick = false;
+  //! What the user asked for, in order. A screenshot or a session saved
+  //! has no file name yet (the viewer gives the next free one).
+  std::vector<command> commands;
   float panel_right = 0;       // where the panel ends, in window pixels
   bool panel_collapsed = false;
+  void add(command c) { commands.push_back(std::move(c)); }
 };
 
 //! The sections below the model's controls (viewer/panel_sections.cpp).
+void draw_actions(const panel_state& s, panel_actions& a);
 void draw_inspector(const panel_state& s, panel_actions& a);
 void draw_parameters(const panel_state& s, panel_actions& a);
 void draw_plots(const panel_state& s);

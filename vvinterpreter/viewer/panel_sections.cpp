@@ -1,5 +1,5 @@
 // The panel's sections for looking into a model: the picked vertex, its
-// parameters, its plots, and how it is drawn.
+// actions, its parameters, its plots, and how it is drawn.
 #include <imgui.h>
 
 #include <algorithm>
@@ -40,26 +40,53 @@ void parameter_row(const parameter_view& p, panel_actions& a) {
   const ImGuiInputTextFlags on_enter = ImGuiInputTextFlags_EnterReturnsTrue;
   if (p.type == "bool") {
     bool on = p.number != 0;
-    if (ImGui::Checkbox("##on", &on)) a.set_parameters.emplace_back(p.name, on ? "true" : "false");
+    if (ImGui::Checkbox("##on", &on)) a.add(command::named(command::set, p.name, on ? "true" : "false"));
   } else if (p.type == "int" || p.type == "unsigned") {
     int v = static_cast<int>(p.number);
     bool changed = p.has_range && ImGui::SliderInt("##slider", &v, int(p.lo), int(p.hi), "", slider);
     ImGui::TableNextColumn();
     ImGui::SetNextItemWidth(-FLT_MIN);
     changed |= ImGui::InputInt("##value", &v, 0, 0, on_enter);
-    if (changed) a.set_parameters.emplace_back(p.name, std::to_string(v));
+    if (changed) a.add(command::named(command::set, p.name, std::to_string(v)));
   } else {
     double v = p.number;
     bool changed = p.has_range && ImGui::SliderScalar("##slider", ImGuiDataType_Double, &v, &p.lo, &p.hi, "", slider);
     ImGui::TableNextColumn();
     ImGui::SetNextItemWidth(-FLT_MIN);
     changed |= ImGui::InputDouble("##value", &v, 0, 0, "%.6g", on_enter);
-    if (changed) a.set_parameters.emplace_back(p.name, number_text(p.type == "float" ? double(float(v)) : v));
+    if (changed) a.add(command::named(command::set, p.name, number_text(p.type == "float" ? double(float(v)) : v)));
   }
   ImGui::PopID();
 }
 
 }  // namespace
+
+// A button per action, its key in brackets, as many to a line as fit.
+void draw_actions(const panel_state& s, panel_actions& a) {
+  if (s.actions.empty() || !ImGui::CollapsingHeader("Actions", ImGuiTreeNodeFlags_DefaultOpen)) return;
+  bool disabled = !s.has_model || s.busy;
+  if (disabled) ImGui::BeginDisabled();
+  const float line_width = 300;  // the panel's narrowest
+  const ImGuiStyle& style = ImGui::GetStyle();
+  float used = 0;
+  for (std::size_t i = 0; i < s.actions.size(); ++i) {
+    const action_view& v = s.actions[i];
+    std::string label = v.name + (v.key ? std::string(" (") + static_cast<char>(v.key) + ")" : "");
+    float width = ImGui::CalcTextSize(label.c_str()).x + 2 * style.FramePadding.x;
+    if (i > 0 && used + style.ItemSpacing.x + width <= line_width) {
+      ImGui::SameLine();
+      used += style.ItemSpacing.x + width;
+    } else {
+      used = width;
+    }
+    ImGui::PushID(static_cast<int>(i));
+    if (ImGui::Button(label.c_str())) a.add(command::named(command::action, v.name));
+    if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled))
+      ImGui::SetTooltip("action \"%s\", line %d", v.name.c_str(), v.line);
+    ImGui::PopID();
+  }
+  if (disabled) ImGui::EndDisabled();
+}
 
 void draw_parameters(const panel_state& s, panel_actions& a) {
   if (s.parameters.empty() || !ImGui::CollapsingHeader("Parameters", ImGuiTreeNodeFlags_DefaultOpen)) return;
@@ -73,8 +100,9 @@ void draw_parameters(const panel_state& s, panel_actions& a) {
     ImGui::EndTable();
   }
   bool rewind = s.rewind_on_change;
-  if (ImGui::Checkbox("Rewind on change (run again to this step)", &rewind)) a.toggle_rewind_on_change = true;
-  a.save_parameters = ImGui::Button("Save to file");
+  if (ImGui::Checkbox("Rewind on change (run again to this step)", &rewind))
+    a.add(command::switched(command::rewind_on_change, "", rewind));
+  if (ImGui::Button("Save to file")) a.add(command::of(command::save_params));
   if (ImGui::IsItemHovered()) ImGui::SetTooltip("write these values into the parameters' lines of the .vvp");
   if (disabled) ImGui::EndDisabled();
 }
@@ -92,24 +120,26 @@ void draw_plots(const panel_state& s) {
 
 void draw_display(const panel_state& s, panel_actions& a) {
   if (!ImGui::CollapsingHeader("Display")) return;
-  display_style style = s.style;
-  bool changed = ImGui::Checkbox("faces", &style.faces);
+  // Each box is a `show WHAT on|off`.
+  auto toggle = [&a](const char* label, const char* what, bool on) {
+    if (ImGui::Checkbox(label, &on)) a.add(command::switched(command::show, what, on));
+  };
+  const display_style& style = s.style;
+  toggle("faces", "faces", style.faces);
   ImGui::SameLine();
-  changed |= ImGui::Checkbox("edges", &style.edges);
+  toggle("edges", "edges", style.edges);
   ImGui::SameLine();
-  changed |= ImGui::Checkbox("points", &style.points);
-  changed |= ImGui::Checkbox("flat shading", &style.flat);
+  toggle("points", "points", style.points);
+  toggle("flat shading", "flat", style.flat);
   ImGui::SameLine();
-  changed |= ImGui::Checkbox("back faces", &style.back_faces);
-  changed |= ImGui::Checkbox("hide edges when they fill the picture", &style.auto_hide_edges);
-  if (changed) a.style_changed = true, a.style = style;
-  bool fit = s.auto_fit;
-  if (ImGui::Checkbox("fit the view while the model grows", &fit)) a.toggle_auto_fit = true;
+  toggle("back faces", "back-faces", style.back_faces);
+  toggle("hide edges when they fill the picture", "auto-hide-edges", style.auto_hide_edges);
+  toggle("fit the view while the model grows", "auto-fit", s.auto_fit);
   const char* shown = s.color_by.empty() ? "(plain)" : s.color_by.c_str();
   if (ImGui::BeginCombo("colour by", shown)) {
-    if (ImGui::Selectable("(plain)", s.color_by.empty())) a.color_by_changed = true, a.color_by.clear();
+    if (ImGui::Selectable("(plain)", s.color_by.empty())) a.add(command::named(command::color_by, ""));
     for (const std::string& f : s.numeric_fields)
-      if (ImGui::Selectable(f.c_str(), f == s.color_by)) a.color_by_changed = true, a.color_by = f;
+      if (ImGui::Selectable(f.c_str(), f == s.color_by)) a.add(command::named(command::color_by, f));
     ImGui::EndCombo();
   }
   if (s.has_values) ImGui::Text("%s: %.6g (dark) to %.6g (light)", s.color_by.c_str(), s.value_min, s.value_max);
@@ -143,7 +173,7 @@ void draw_inspector(const panel_state& s, panel_actions& a) {
   ImGui::SameLine();
   swatch("##neighbours", pick_colours::neighbour, "neighbours");
   ImGui::SameLine();
-  a.clear_pick = ImGui::SmallButton("Clear");
+  if (ImGui::SmallButton("Clear")) a.add(command::labelled(command::inspect, 0));
   // A vertex with many neighbours has a long description: it scrolls in a
   // box of its own, so the sections below stay within reach.
   constexpr int most_lines = 14;

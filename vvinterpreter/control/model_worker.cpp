@@ -1,4 +1,4 @@
-#include "viewer/model_worker.hpp"
+#include "control/model_worker.hpp"
 
 #include "runner/fault_guard.hpp"
 

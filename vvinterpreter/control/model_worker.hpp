@@ -11,24 +11,22 @@
 #include <string>
 #include <thread>
 
+#include "control/model_jobs.hpp"
+
 namespace vvi {
 
-class model_worker {
+class model_worker : public model_jobs {
  public:
   model_worker();
   ~model_worker();
   model_worker(const model_worker&) = delete;
   model_worker& operator=(const model_worker&) = delete;
 
-  //! Starts a job; the worker must be idle. `what` says what it does
-  //! ("step 3") for the window to show.
-  void submit(std::function<void()> job, const std::string& what);
-  bool busy() const;
-  //! How long the running job has run.
-  double busy_seconds() const;
-  std::string what() const;
-  //! True once after each job ended.
-  bool take_finished();
+  void submit(std::function<void()> job, const std::string& what) override;
+  bool busy() const override;
+  double busy_seconds() const override;
+  std::string what() const override;
+  bool take_finished() override;
 
  private:
   void loop();

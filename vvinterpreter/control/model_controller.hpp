@@ -1,0 +1,166 @@
+// The model controller: the one thing that drives the model. Keys, the
+// panel, --script, batch mode and replays all give it commands
+// (command.hpp); it runs them in order, the model's code as jobs
+// (model_jobs.hpp), and keeps
+//
+// * the event log (event_log.hpp): every event that changed the model, so
+//   that a reload, a restart, or the return to the last good state after
+//   an error replays it and comes back to the same state;
+// * the state record (state_record.hpp), told to the view before any job
+//   starts, so a crash never repeats what it crashed in;
+// * the facts the panel shows (model_facts.hpp), which stay valid while a
+//   job runs.
+//
+// It uses no GL: whatever draws is a controller_view.
+#pragma once
+
+#include <deque>
+#include <functional>
+#include <future>
+#include <optional>
+#include <string>
+
+#include "app/options.hpp"
+#include "control/command.hpp"
+#include "control/controller_view.hpp"
+#include "control/event_log.hpp"
+#include "control/model_facts.hpp"
+#include "control/model_jobs.hpp"
+#include "control/state_record.hpp"
+#include "runner/model_runner.hpp"
+
+namespace vvi {
+
+struct controller_policy {
+  //! After an error in a step, end, action or pick, the model comes back
+  //! to its last good state (replaying the log). Off (batch): the first
+  //! error ends the run (failed()).
+  bool restore_after_error = true;
+};
+
+class model_controller {
+ public:
+  //! `from`: the record of a viewer that died (restarted), or a fresh one.
+  model_controller(const options& o, model_jobs& jobs, controller_view& view, const state_record& from = {},
+                   controller_policy policy = {});
+  ~model_controller();
+  model_controller(const model_controller&) = delete;
+  model_controller& operator=(const model_controller&) = delete;
+
+  //! A command from anyone. `stop` acts at once; a command of the view that
+  //! does not read the model (rotate, zoom, show, ...) too, when nothing is
+  //! queued; everything else is queued and carried out by poll().
+  void submit(const command& c);
+  //! Ends finished builds and jobs, starts what is next; `now` in seconds
+  //! (animation, wait). With inline jobs, runs until nothing can go on.
+  void poll(double now);
+  //! Loads a build made elsewhere (batch) and replays `log` on it.
+  void load_build(const build_result& b, const event_log& log);
+  //! Runs the model's close block and unloads it (the window closes, the
+  //! batch run ends); "" or the error.
+  std::string close_model();
+
+  //! Nothing queued, running, building or loading, the view caught up: a
+  //! script's next command may go.
+  bool idle() const;
+  //! Only a job runs (a script's `wait` and `window-screenshot` go beside it).
+  bool only_a_job_runs() const;
+  bool busy() const { return jobs_.busy(); }
+  //! The view has shown what it was asked to (pictures taken, states drawn).
+  bool view_caught_up() const { return view_.caught_up(); }
+  bool building() const { return building_; }
+  bool animating() const { return animating_; }
+  double job_seconds() const { return jobs_.busy_seconds(); }
+  std::string job_what() const { return jobs_.what(); }
+  //! "running", "compiling ...", ...
+  const std::string& status() const { return status_; }
+  const std::string& warnings() const { return warnings_; }
+  //! The model's state, as the last job left it.
+  const model_facts& facts() const { return facts_; }
+  const model_runner& runner() const { return runner_; }
+  const state_record& record() const { return record_; }
+  const event_log& log() const { return log_; }
+  //! Whether an error ended the run (policy without restore_after_error).
+  bool failed() const { return !failure_.empty(); }
+  const std::string& failure() const { return failure_; }
+
+  // The parts of the record others keep.
+  void update_view(const view_record& v);
+  void set_script_position(std::size_t n);
+  void set_up();
+  void set_quitting();
+
+ private:
+  // A fresh instance of a plugin, then the events of `log` replayed on it.
+  struct load_plan {
+    std::string plugin;
+    event_log log;
+    std::string message;  // said when it is done
+    bool trying = false;  // a new build: the last good model stays in the record until it is done
+    bool keep_error = false;
+    bool restore_on_error = true;  // a failed event of the replay: replay again up to it
+  };
+  struct replay_state {
+    load_plan plan;
+    std::size_t next = 0;
+    event_log done;
+    unsigned long steps_in_event = 0;
+    std::string error;
+  };
+
+  bool start_next(double now);
+  //! false when the command must wait (a view that is not ready).
+  bool carry_out(const command& c, double now);
+  void run_job(const std::string& activity, const std::string& what, std::function<bool()> work,
+               std::function<void(bool)> then);
+  void refresh_facts();
+  void flush_record();
+  void stop();
+  // Model commands (model_controller.cpp).
+  void run_step(bool user);
+  void run_event(const command& c);
+  bool runs_nothing(const command& c) const;
+  void event_done(const command& c, bool ok, const std::string& error);
+  void set_parameter(const command& c);
+  void write_out(const command& c);
+  void error(const std::string& shown, const std::string& line);
+  // Builds, loads and replays (model_loads.cpp).
+  void start_build(bool force);
+  void finish_build();
+  std::optional<load_plan> plan_for(const build_result& b);
+  void begin_load();
+  void loaded(bool ok);
+  void replay_next();
+  void replayed(bool ok);
+  void finish_load();
+  void restore_after_error();
+  bool carry_event(const command& c, unsigned long& steps, std::string& error);
+  std::string model_name() const { return o_.model; }
+
+  options o_;
+  model_jobs& jobs_;
+  controller_view& view_;
+  controller_policy policy_;
+  model_runner runner_;
+  state_record record_;
+  std::string sent_;  // the record line the view has
+  event_log log_;
+  model_facts facts_;
+  std::deque<command> queue_;
+  unsigned long steps_left_ = 0;  // of the step or run command going on
+  bool animating_ = false;
+  double now_ = 0, last_animated_ = 0, wait_until_ = 0;
+  std::function<void(bool)> then_;  // the running job's follow-up
+  bool job_ok_ = false;
+  std::string activity_;            // what the running job is, for Stop ("step", "loading", ...)
+  std::optional<load_plan> load_;   // to start
+  std::optional<load_plan> loading_;
+  std::optional<replay_state> replay_;
+  bool resume_pending_ = false;     // the first build after a restart
+  bool keep_error_once_ = false;
+  bool building_ = false, build_cached_ = false;
+  std::future<build_result> build_;
+  std::string status_ = "starting", warnings_, failure_;
+};
+
+}  // namespace vvi

@@ -1,0 +1,29 @@
+#include "viewer/build_watch.hpp"
+
+#include "control/model_controller.hpp"
+
+namespace vvi {
+
+void build_watch::build_started() {
+  std::vector<std::string> known = sources_.paths();
+  if (known.empty()) known.push_back(model_);
+  before_build_ = file_watch::stamps_of(known);
+}
+
+void build_watch::build_finished(const build_result& b) {
+  if (!b.sources.empty()) sources_.watch(b.sources, before_build_);
+}
+
+void build_watch::model_files(const std::vector<std::string>& files) {
+  if (files != objects_watched_) objects_watched_ = files, objects_.watch(files);
+}
+
+void build_watch::check(double now, model_controller& c) {
+  if (now - last_check_ < 0.25) return;
+  last_check_ = now;
+  if (!c.building() && sources_.changed()) c.submit(command::of(command::reload));
+  // A file a file object reads was saved: reread it, keeping the step.
+  if (objects_.changed() && c.facts().loaded) c.submit(command::of(command::reread));
+}
+
+}  // namespace vvi

@@ -1,0 +1,42 @@
+// Continuous modelling: the model's source files and the files its file
+// objects read are watched (every quarter of a second); a saved source is
+// a `reload`, a saved file of a file object a `reread` (an event of the
+// model: the log keeps it).
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "compile/model_build.hpp"
+#include "viewer/file_watch.hpp"
+
+namespace vvi {
+
+class model_controller;
+
+class build_watch {
+ public:
+  explicit build_watch(std::string model) : model_(std::move(model)) {}
+
+  //! A build starts: what its sources are now (a save during the build is
+  //! a change after it).
+  void build_started();
+  //! The build's sources are watched from the state they had when it started.
+  void build_finished(const build_result& b);
+  //! The files the model's file objects read, as the job just done left
+  //! them: watched from now (before the next job, so a save while it runs
+  //! is a change).
+  void model_files(const std::vector<std::string>& files);
+  //! Looks at the files (at most every 0.25 s) and gives the controller
+  //! what their changes ask for.
+  void check(double now, model_controller& c);
+
+ private:
+  std::string model_;
+  file_watch sources_, objects_;
+  std::vector<file_watch::stamp> before_build_;
+  std::vector<std::string> objects_watched_;
+  double last_check_ = 0;
+};
+
+}  // namespace vvi
