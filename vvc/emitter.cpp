@@ -1,5 +1,6 @@
 #include "emitter.hpp"
 
+#include <string>
 #include <unordered_set>
 
 #include "keywords.hpp"
@@ -56,6 +57,25 @@ const char* const apart_instantiations[] = {
     "class vv::context<vv_traits>",
     "class vv::mesh<vv_traits>",
     "void vv::model::program<vv_traits>::configure(const vv_plugin_settings&)"};
+
+// The query of `(query): its vertex is read at once, so the library names
+// it by its slot, uncounted (vvlib/vv/uncounted.hpp). Null when run is
+// anything else (a variable, a call, a query giving no vertex, ...).
+const piece* read_at_once_query(const pieces& run) {
+  if (run.size() != 1) return nullptr;
+  const piece* p = &run[0];
+  if (p->kind == piece_kind::group && p->tok->text == "(" && p->parts.size() == 1 && p->parts[0].size() == 1)
+    p = &p->parts[0][0];
+  if (p->kind != piece_kind::query) return nullptr;
+  switch (p->query) {
+    case query_kind::next_to:
+    case query_kind::next_i_to:
+    case query_kind::prev_to:
+    case query_kind::prev_i_to:
+    case query_kind::any_in: return p;
+    default: return nullptr;
+  }
+}
 
 const char* struct_name(const std::string& keyword) {
   return keyword == "edge" ? "vv_edge_props" : keyword == "vertex" ? "vv_vertex_props" : "vv_mesh_props";
@@ -502,26 +522,15 @@ class emitter {
       case piece_kind::old_state:
         w_.at(*p.tok);
         w_.text("vv::old(");
-        emit(p.parts[0]);
+        if (const piece* q = read_at_once_query(p.parts[0])) query(*q, "vv::uncounted::");
+        else emit(p.parts[0]);
         w_.text(")");
         break;
       case piece_kind::property:
         w_.text(".props().");
         w_.token(*p.tok);
         break;
-      case piece_kind::query:
-        w_.at(*p.tok);
-        w_.text(query_function(p.query));
-        if (p.query == query_kind::next_i_to || p.query == query_kind::prev_i_to) {
-          comma_list(p.parts, 1);
-          w_.text(", (");
-          emit(p.parts[0]);
-          w_.text(")");
-        } else {
-          comma_list(p.parts, 0);
-        }
-        w_.text(")");
-        break;
+      case piece_kind::query: query(p, ""); break;
       case piece_kind::edge_access:
         w_.at(*p.tok);
         w_.text(p.tok->text == "^" ? "(vv::edge_hat(" : "(vv::edge_bar(");
@@ -538,6 +547,24 @@ class emitter {
         w_.text(p.assign ? ".store()" : ".second()");
         break;
     }
+  }
+
+  // A query; `space` names the library's uncounted versions ("" for the
+  // ordinary ones).
+  void query(const piece& p, const char* space) {
+    w_.at(*p.tok);
+    std::string function = query_function(p.query);
+    if (*space) function.replace(0, 4, space);  // "vv::next_to(" -> "vv::uncounted::next_to("
+    w_.text(function);
+    if (p.query == query_kind::next_i_to || p.query == query_kind::prev_i_to) {
+      comma_list(p.parts, 1);
+      w_.text(", (");
+      emit(p.parts[0]);
+      w_.text(")");
+    } else {
+      comma_list(p.parts, 0);
+    }
+    w_.text(")");
   }
 
   // ---- statements ----

@@ -368,6 +368,46 @@ TEST_F(Paths, OldPathAfterEraseStillFindsOldNeighbours) {
   EXPECT_EQ(vv::old_path(p[0], p[1]).next().second().label(), 6u);
 }
 
+TEST_F(Paths, AWalkCountsNoReferences) {
+  // A step is a neighbour search over slots; only the vertices handed out
+  // are counted.
+  const std::uint32_t a_refs = ctx.refs(p[0].slot()), b_refs = ctx.refs(p[1].slot());
+  auto w = vv::path(p[0], p[1]);
+  w.next().prev();
+  EXPECT_EQ(ctx.refs(p[0].slot()), a_refs);
+  EXPECT_EQ(ctx.refs(p[1].slot()), b_refs);
+  V b = w.second();
+  EXPECT_EQ(b, p[1]);
+  EXPECT_EQ(ctx.refs(p[1].slot()), b_refs + 1);
+}
+
+TEST_F(Paths, StepsFromTheNullVertexAreErrors) {
+  V a, b = p[1];
+  EXPECT_TRUE(throws_vv_error([&] { (void)vv::path(a, b).next().second(); },
+                              {"nextto", "the target is the null vertex", "edges_paths_test.cpp"}));
+  EXPECT_TRUE(throws_vv_error([&] { (void)vv::path(a, b).prev().second(); }, {"prevto", "null vertex"}));
+  EXPECT_TRUE(throws_vv_error([&] { (void)vv::old_path(a, b).next().second(); },
+                              {"`", "old state of the null vertex"}));
+  // A walk that reached null by a step stops there with the same error.
+  EXPECT_TRUE(throws_vv_error([&] { (void)vv::path(p[0], p[2]).next().swap().next().second(); },
+                              {"the target is the null vertex"}));
+}
+
+TEST_F(Paths, StrictOldPathRefusesANeverSynchronisedVertex) {
+  ctx.strict_old_state = true;
+  EXPECT_TRUE(throws_vv_error([&] { (void)vv::old_path(p[0], p[1]).next().second(); },
+                              {"vertex 1 has never been synchronised (strict mode)"}));
+  vv::synchronise(M);
+  EXPECT_EQ(vv::old_path(p[0], p[1]).next().second().label(), 6u);
+}
+
+TEST_F(Paths, AVertexOfAnotherContextIsNoNeighbour) {
+  G::context other;
+  V stranger = other.new_vertex();
+  EXPECT_FALSE(vv::path(p[0], stranger).next().second());
+  EXPECT_FALSE(vv::old_path(p[0], stranger).prev().second());
+}
+
 TEST_F(Paths, PathIntoAssignsBothVariables) {
   V a = p[0], b = p[1];
   V r = vv::path_into(a, b).swap().next().store();

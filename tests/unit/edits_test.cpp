@@ -87,6 +87,26 @@ TEST_F(Edits, MakeWithTargetListedIsAnError) {
   EXPECT_TRUE(ok());
 }
 
+TEST_F(Edits, MakeWithANullEntryIsAnError) {
+  vv::flag_in(c, v);
+  nb_state before = state_of(v);
+  EXPECT_TRUE(throws_vv_error([&] { vv::make_nb(v, {a, nullptr, x}); },
+                              {"make", "the list for vertex 1 contains the null vertex", "edits_test.cpp"}));
+  EXPECT_TRUE(throws_vv_error([&] { vv::make_nb(v, {a, V(), x}); }, {"contains the null vertex"}));
+  EXPECT_EQ(state_of(v), before);
+  EXPECT_TRUE(ok());
+}
+
+TEST_F(Edits, MakeFromQueryResultsKeepsTheirVertices) {
+  // Entries that are temporaries (query results) are read before the
+  // statement ends: the new neighbourhood names them.
+  V w = ctx.new_vertex();
+  vv::make_nb(w, {vv::any_in(v), vv::next_to(vv::any_in(v), v)});
+  ASSERT_EQ(vv::valence(w), 2u);
+  EXPECT_EQ(vv::any_in(w), vv::any_in(v));
+  EXPECT_EQ(vv::next_to(vv::any_in(w), w), vv::next_to(vv::any_in(v), v));
+}
+
 TEST_F(Edits, MakeWithDuplicateIsAnError) {
   vv::flag_in(c, v);
   nb_state before = state_of(v);

@@ -296,6 +296,49 @@ TEST(MeshMerge, MergeIsUnionKeepingOrder) {
   EXPECT_FALSE(M.contains(vs[4]));
 }
 
+TEST(MeshMerge, CountsEachNewMemberOnce) {
+  G::context ctx;
+  std::vector<V> vs = make_vertices(ctx, 3);
+  Mesh M(ctx), N(ctx);
+  M.add(vs[0]);
+  N.add(vs[0]);
+  N.add(vs[1]);
+  const std::uint32_t before0 = ctx.refs(vs[0].slot()), before1 = ctx.refs(vs[1].slot());
+  M.merge(N);
+  EXPECT_EQ(ctx.refs(vs[0].slot()), before0);  // already a member
+  EXPECT_EQ(ctx.refs(vs[1].slot()), before1 + 1);
+  EXPECT_EQ(ctx.refs(vs[2].slot()), 1u);  // the handle alone
+}
+
+TEST(MeshMerge, IntoAMeshWithoutContextTakesTheOthers) {
+  G::context ctx;
+  std::vector<V> vs = make_vertices(ctx, 2);
+  Mesh N(ctx);
+  N.add(vs[1]);
+  N.add(vs[0]);
+  Mesh M;
+  M.merge(N);
+  EXPECT_EQ(M.ctx(), &ctx);
+  EXPECT_EQ(labels_of(M), (Labels{vs[1].label(), vs[0].label()}));
+}
+
+TEST(MeshMerge, AMeshOfAnotherContextIsAnErrorAndChangesNothing) {
+  G::context ctx, other;
+  std::vector<V> vs = make_vertices(ctx, 1), strangers = make_vertices(other, 2);
+  Mesh M(ctx), N(other);
+  M.add(vs[0]);
+  N.add(strangers[0]);
+  N.add(strangers[1]);
+  std::string message;
+  try {
+    M.merge(N);
+  } catch (const vv::error& e) {
+    message = e.what();
+  }
+  EXPECT_NE(message.find("add: vertex 1 belongs to another context than the mesh"), std::string::npos) << message;
+  EXPECT_EQ(labels_of(M), (Labels{vs[0].label()}));
+}
+
 TEST(MeshMerge, PlusEqualsIsUnionAndReturnsTheMesh) {
   G::context ctx;
   std::vector<V> vs = make_vertices(ctx, 4);

@@ -12,23 +12,11 @@
 
 #include <pugixml.hpp>
 
+#include "xml_text.hpp"
+
 namespace vv {
 
 namespace {
-
-std::string escaped(const std::string& text) {
-  std::string out;
-  for (char c : text) {
-    switch (c) {
-      case '&': out += "&amp;"; break;
-      case '<': out += "&lt;"; break;
-      case '>': out += "&gt;"; break;
-      case '"': out += "&quot;"; break;
-      default: out += c;
-    }
-  }
-  return out;
-}
 
 // `file` as the .pvd at pvd_path names it: relative to the .pvd's folder
 // (both taken from the working folder when relative), or absolute when
@@ -54,7 +42,7 @@ std::string pvd_text(const std::vector<pvd_entry>& entries) {
       "  <Collection>\n";
   for (const pvd_entry& e : entries)
     out += "    <DataSet timestep=\"" + std::to_string(e.step) + "\" group=\"\" part=\"0\" file=\"" +
-           escaped(e.file) + "\"/>\n";
+           formats_detail::xml_attribute_text(e.file) + "\"/>\n";
   return out + "  </Collection>\n</VTKFile>\n";
 }
 

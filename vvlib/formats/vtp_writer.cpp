@@ -8,6 +8,8 @@
 #include <cstdint>
 #include <cstring>
 
+#include "xml_text.hpp"
+
 namespace vv {
 
 namespace {
@@ -45,20 +47,6 @@ void append_u64(std::string& out, std::uint64_t v) {
   for (int b = 0; b < 8; ++b) out += static_cast<char>((v >> (8 * b)) & 0xff);
 }
 
-std::string escaped(const std::string& text) {
-  std::string out;
-  for (char c : text) {
-    switch (c) {
-      case '&': out += "&amp;"; break;
-      case '<': out += "&lt;"; break;
-      case '>': out += "&gt;"; break;
-      case '"': out += "&quot;"; break;
-      default: out += c;
-    }
-  }
-  return out;
-}
-
 // The XML header and the appended block, built side by side.
 class vtp_builder {
  public:
@@ -66,7 +54,7 @@ class vtp_builder {
   void array(const std::string& indent, const std::string& name, vtk_number type, unsigned components,
              const char* values, std::size_t count) {
     std::size_t size = vtk_number_size(type);
-    xml += indent + "<DataArray type=\"" + vtk_name(type) + "\" Name=\"" + escaped(name) +
+    xml += indent + "<DataArray type=\"" + vtk_name(type) + "\" Name=\"" + formats_detail::xml_attribute_text(name) +
            "\" NumberOfComponents=\"" + std::to_string(components) + "\" format=\"appended\" offset=\"" +
            std::to_string(appended.size()) + "\"/>\n";
     append_u64(appended, static_cast<std::uint64_t>(count) * size);

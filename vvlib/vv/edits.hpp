@@ -10,6 +10,7 @@
 #include "detail/inline.hpp"
 
 #include <algorithm>
+#include <cstddef>
 #include <cstdint>
 #include <initializer_list>
 #include <iterator>
@@ -71,7 +72,7 @@ void make_neighbourhood(const vertex<Tr>& v, It first, It last, const where& w) 
   std::uint64_t seen = 0;
   bool maybe_twice = false;
   for (It it = first; it != last; ++it, ++k) {
-    const vertex<Tr>& x = *it;
+    const vertex<Tr>& x = static_cast<const vertex<Tr>&>(*it);
     if (!x) raise(w, "make", [&] { return "the list for " + name_of(v) + " contains the null vertex"; });
     if (x.ctx() != v.ctx())
       raise(w, "make", [&] { return name_of(x) + " belongs to another context than " + name_of(v); });
@@ -104,11 +105,30 @@ void make_neighbourhood(const vertex<Tr>& v, It first, It last, const where& w) 
   nb.set_flag(nb.no_flag);
 }
 
+//! An entry of a `make` list: the vertex it names, not a copy. The list and
+//! the temporaries its entries name live to the end of the statement, so
+//! building it costs no reference counts (a list of handles would count
+//! every entry twice, in and out).
+template <class Tr>
+class make_item {
+ public:
+  make_item(const vertex<Tr>& v) noexcept : v_(&v) {}
+  make_item(std::nullptr_t) noexcept : v_(&null_vertex()) {}  // `make {0} ...`: an error, named
+  operator const vertex<Tr>&() const noexcept { return *v_; }
+
+ private:
+  static const vertex<Tr>& null_vertex() noexcept {
+    static const vertex<Tr> null;
+    return null;
+  }
+  const vertex<Tr>* v_;
+};
+
 }  // namespace detail
 
 //! `make {a, b, c} nb_of v;`
 template <class V, detail::if_vertex_like<V> = 0>
-VV_INLINE void make_nb(const V& target, std::initializer_list<vertex<typename V::traits_type>> list,
+VV_INLINE void make_nb(const V& target, std::initializer_list<detail::make_item<typename V::traits_type>> list,
              where w = where::here()) {
   const auto& v = detail::edit_target(target, "make", w);
   detail::make_neighbourhood(v, list.begin(), list.end(), w);

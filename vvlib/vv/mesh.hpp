@@ -93,10 +93,7 @@ class mesh : public Tr::mesh_props {
     adopt_context(v, w);
     check_unchanging(w, "add");
     if (find_position(v.slot()) >= 0) return;
-    ctx_->retain(v.slot());
-    order_.push_back(v.slot());
-    ++count_;
-    index_.insert(v.slot(), order_.size() - 1, order_, count_, slot_bound());
+    add_slot(v.slot());
   }
 
   //! `remove v from M;` (no effect if v is not a member)
@@ -127,8 +124,16 @@ class mesh : public Tr::mesh_props {
     std::size_t needed = order_.size() + o.count_;
     if (needed > order_.capacity())
       order_.reserve(std::max(needed, order_.capacity() + order_.capacity() / 2));
+    if (o.ctx_ != ctx_ && ctx_ && o.count_) {
+      // Another context's vertices: add names the first as the error.
+      for (std::uint32_t id : o.order_)
+        if (id) add(vertex_type::from_slot(o.ctx_, id), w);
+      return;
+    }
+    if (!ctx_) ctx_ = o.ctx_;
+    // Slot by slot, without a handle per member (a count in and out).
     for (std::uint32_t id : o.order_)
-      if (id) add(vertex_type::from_slot(o.ctx_, id), w);
+      if (id && find_position(id) < 0) add_slot(id);
   }
   mesh& operator+=(const mesh& o) {
     merge(o, where{});
@@ -220,6 +225,13 @@ class mesh : public Tr::mesh_props {
   }
 
   std::ptrdiff_t find_position(std::uint32_t id) const noexcept { return index_.find(id, order_); }
+  // Adds a slot of ctx_ that is not a member.
+  void add_slot(std::uint32_t id) {
+    ctx_->retain(id);
+    order_.push_back(id);
+    ++count_;
+    index_.insert(id, order_.size() - 1, order_, count_, slot_bound());
+  }
   std::size_t slot_bound() const noexcept { return ctx_ ? ctx_->slot_count() : 0; }
 
   // Squeeze out holes once they outnumber the members.

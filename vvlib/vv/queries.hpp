@@ -48,17 +48,23 @@ inline std::uint32_t cyclic_step(std::uint32_t pos, std::uint32_t n, unsigned lo
 }
 
 // The neighbour `count` places after (forward) or before x around v,
-// cyclically. count >= 1; taken modulo the valence first, so no sum
-// overflows however large it is.
+// cyclically, by its slot (null: {nullptr, 0}). count >= 1; taken modulo
+// the valence first, so no sum overflows however large it is.
 template <class V>
-VV_INLINE vertex<typename V::traits_type> step_from(const vertex<typename V::traits_type>& x, const V& v,
-                                          unsigned long count, bool forward, const char* op, const where& w) {
-  using vx = vertex<typename V::traits_type>;
+VV_INLINE vertex_ref<typename V::traits_type> step_ref(const vertex<typename V::traits_type>& x, const V& v,
+                                                 unsigned long count, bool forward, const char* op,
+                                                 const where& w) {
   auto s = view(v, op, w);
   // A null or foreign x has slot 0, which no entry holds.
   std::int32_t pos = find(*s.nb, slot_in(x, s.ctx));
-  if (pos < 0) return vx();
-  return vx::from_slot(s.ctx, entry_id((*s.nb)[cyclic_step(static_cast<std::uint32_t>(pos), s.nb->size(), count, forward)]));
+  if (pos < 0) return {nullptr, 0};
+  return {s.ctx, entry_id((*s.nb)[cyclic_step(static_cast<std::uint32_t>(pos), s.nb->size(), count, forward)])};
+}
+template <class V>
+VV_INLINE vertex<typename V::traits_type> step_from(const vertex<typename V::traits_type>& x, const V& v,
+                                          unsigned long count, bool forward, const char* op, const where& w) {
+  const auto r = step_ref(x, v, count, forward, op, w);
+  return vertex<typename V::traits_type>::from_slot(r.ctx, r.id);
 }
 
 // The count of next(i)to / prev(i)to: 1 or more.

@@ -136,6 +136,14 @@ std::string name_of(const vertex<Tr>& v) {
   return v ? "vertex " + std::to_string(v.label()) : std::string("the null vertex");
 }
 
+//! A vertex named by its slot, without a count: a query's result that is
+//! read at once (vv/uncounted.hpp). {nullptr, 0} is the null vertex.
+template <class Tr>
+struct vertex_ref {
+  context<Tr>* ctx;
+  std::uint32_t id;
+};
+
 //! `` `v ``: the state saved by the last synchronise of a mesh holding v.
 //! Read-only; neighbourhood queries on it walk the old neighbourhood.
 //!
@@ -170,8 +178,11 @@ class old_vertex {
   // ---- for the library ----
   context<Tr>* ctx() const noexcept { return ctx_; }
   std::uint32_t slot() const noexcept { return id_; }
+  //! The old state of a live slot, unchecked (the caller checked).
+  static old_vertex from_slot(context<Tr>* c, std::uint32_t id) noexcept { return old_vertex(c, id); }
 
  private:
+  old_vertex(context<Tr>* c, std::uint32_t id) noexcept : ctx_(c), id_(id) {}
   context<Tr>* ctx_;
   std::uint32_t id_;
 };

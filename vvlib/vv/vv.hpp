@@ -23,6 +23,7 @@
 #include "path.hpp"
 #include "queries.hpp"
 #include "target_first.hpp"
+#include "uncounted.hpp"
 #include "vertex.hpp"
 
 namespace vv {

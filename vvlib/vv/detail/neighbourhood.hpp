@@ -122,6 +122,17 @@ class neighbourhood {
   //! Replace the contents by n entries (the flag is left alone).
   void assign(const Entry* src, std::uint32_t n) {
     if (src == data() && n == size_) return;
+    if constexpr (!moves_on_edit && std::is_trivially_copyable<Entry>::value) {
+      if (n <= K && size_ <= K) {
+        // Inline to inline (a `make` of a common valence): a short loop
+        // instead of a call to memmove for a few bytes. src is never
+        // before the inline storage, so copying forward is safe.
+        Entry* d = inline_data();
+        for (std::uint32_t i = 0; i < n; ++i) d[i] = src[i];
+        size_ = n;
+        return;
+      }
+    }
     if constexpr (moves_on_edit) {
       Entry* block = allocate(n);
       std::uninitialized_copy(src, src + n, block);
