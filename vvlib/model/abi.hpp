@@ -18,8 +18,10 @@
  * 6: only C crosses (run settings and plots through accessors, no
  *    vv::proxy*); actions, the pick block; vv_plugin_settings::threads
  *    (parallel forall); write_file and union_file (were write_vvm and
- *    union_vvm) write .vtp too and take max_face. */
-#define VV_PLUGIN_ABI_VERSION 6
+ *    union_vvm) write .vtp too and take max_face.
+ * 7: checkpoints: the program's globals (globals, global_count),
+ *    save_state and restore_state, and the program's name and hash. */
+#define VV_PLUGIN_ABI_VERSION 7
 /* The one symbol a model exports. */
 #define VV_PLUGIN_DESCRIPTOR_SYMBOL "vv_plugin_descriptor"
 
@@ -113,6 +115,23 @@ typedef struct vv_action_entry {
   const char* (*run)(void); /* runs its block: NULL, or the error */
 } vv_action_entry;
 
+/* How a checkpoint keeps a global (vv_global_entry::kept). */
+#define VV_GLOBAL_SAVED 0      /* its value is saved and restored */
+#define VV_GLOBAL_CONSTANT 1   /* const, or a reference: it never changes */
+#define VV_GLOBAL_FROM_FILE 2  /* a file object: made from its file when the model loads */
+#define VV_GLOBAL_UNSAVEABLE 3 /* a checkpoint cannot hold it (why says why) */
+
+/* A global variable of the program, as the translator found it: every
+ * top-level variable (meshes and parameters too), and the static
+ * variables inside functions. */
+typedef struct vv_global_entry {
+  const char* name;
+  const char* type; /* as the declaration writes it */
+  int line;         /* of its declaration in the .vvp */
+  int kept;         /* VV_GLOBAL_* */
+  const char* why;  /* VV_GLOBAL_UNSAVEABLE: why not ("a pointer ..."); else NULL */
+} vv_global_entry;
+
 /* A model: what the host may call. Functions that run the program's code
  * return NULL, or the error (file:line: ...). */
 typedef struct vv_plugin {
@@ -171,6 +190,21 @@ typedef struct vv_plugin {
   const char* (*file_objects)(void);
   /* Return addresses of the last error whose message has no source location. */
   const void* const* (*error_frames)(size_t* count);
+
+  /* Checkpoints. The program: its .vvp's file name, and a hash of the
+   * text of every .vvp file it was translated from (32 hex digits). */
+  const char* program_name;
+  const char* program_hash;
+  /* The program's globals, in source order (NULL and 0 when none). */
+  const vv_global_entry* globals;
+  size_t global_count;
+  /* The model's whole state as bytes, between blocks: *data and *size
+   * stay valid until the next call. NULL, or the error (naming a global
+   * or property it cannot save). */
+  const char* (*save_state)(const void** data, size_t* size);
+  /* Instead of start: the state save_state gave, of the same program.
+   * NULL, or the error (the model is then half restored: unload it). */
+  const char* (*restore_state)(const void* data, size_t size);
 } vv_plugin;
 
 /* Defined by the translated program. */

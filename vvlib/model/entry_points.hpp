@@ -24,6 +24,7 @@
 
 #include "abi.hpp"
 #include "program.hpp"
+#include "state.hpp"
 
 namespace vv::model {
 
@@ -200,6 +201,25 @@ const char* file_object_paths(program<Tr>& p) noexcept {
     for (const std::string& path : paths) x.text += path + "\n";
   });
   return e ? "" : x.text.c_str();
+}
+
+//! vv_plugin::save_state: the bytes stay in the exchange until the next call.
+template <class Tr>
+const char* save_state_entry(program<Tr>& p, global_slot<Tr>* globals, std::size_t n, const void** data,
+                             std::size_t* size) noexcept {
+  exchange& x = p.host_exchange();
+  return p.run([&] {
+    x.state = save_state(p, globals, n);
+    *data = x.state.data();
+    *size = x.state.size();
+  });
+}
+
+//! vv_plugin::restore_state.
+template <class Tr>
+const char* restore_state_entry(program<Tr>& p, global_slot<Tr>* globals, std::size_t n, const void* data,
+                                std::size_t size) noexcept {
+  return p.run([&] { restore_state(p, globals, n, data, size); });
 }
 
 //! vv_plugin::check: a mesh that was symmetric at the last check must still

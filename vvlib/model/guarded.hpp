@@ -32,6 +32,7 @@ struct exchange {
   std::string numeric_fields, text;
   std::shared_ptr<void> union_mesh;  //!< the last union_geometry's mesh
   std::vector<char> was_symmetric;   //!< per global mesh, at the last check
+  std::string state;                 //!< the last save_state's bytes
 };
 
 //! Runs fn, turning any exception into the returned message (or NULL). An

@@ -56,8 +56,16 @@
 
 namespace vv {
 
+namespace model {
+// Saves and restores a context slot for slot (model/state_context.hpp).
+template <class Tr>
+struct context_state;
+}  // namespace model
+
 template <class Tr>
 class context {
+  friend struct model::context_state<Tr>;
+
  public:
   using traits_type = Tr;
   using vertex_props = typename Tr::vertex_props;
