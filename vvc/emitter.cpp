@@ -3,6 +3,7 @@
 #include <string>
 #include <unordered_set>
 
+#include "globals.hpp"
 #include "keywords.hpp"
 #include "writer.hpp"
 
@@ -285,6 +286,14 @@ class emitter {
     bool any = false;
     for (const field& f : b.fields) any = any || f.in_files;
     if (!any) s += "    (void)vv_visit;\n";
+    s += "  }\n";
+    // Every field, handles and pointers too, with its line: what a
+    // checkpoint saves (model/state_values.hpp), or names when it cannot.
+    s += "  template <class vv_F>\n  void vv_state_fields(vv_F&& vv_visit) {\n";
+    for (const field& f : b.fields)
+      s += "    vv_visit(\"" + std::string(f.name->text) + "\", " + std::string(f.name->text) + ", " +
+           std::to_string(f.name->line) + ");\n";
+    if (b.fields.empty()) s += "    (void)vv_visit;\n";
     s += "  }";
     // The fields the program computes: files need not give them (vv/fields.hpp).
     std::string computed;
@@ -375,6 +384,7 @@ class emitter {
     s += "static const void* const* vv_entry_error_frames(std::size_t* vv_count) {\n"
          "  *vv_count = vv_model.host_exchange().error_frames.size();\n"
          "  return vv_model.host_exchange().error_frames.data();\n}\n";
+    s += global_table();
     s += apart_functions(false);
     s += "#ifndef VV_DECLARATIONS_APART\n" + apart_functions(true) + "#endif\n";
     s += mesh_table();
@@ -400,11 +410,47 @@ class emitter {
     }
     for (const char* name : {"configure", "reread", "run_settings", "set_plot_step", "plot_count", "plot_series",
                              "union_file", "union_geometry", "check", "describe_vertex", "file_objects",
-                             "error_frames"})
+                             "error_frames", "save_state", "restore_state"})
       member(name, std::string("vv_entry_") + name);
+    member("program_name", cpp_string_literal(o_.program_name));
+    member("program_hash", cpp_string_literal(o_.program_hash));
+    if (!globals_.empty()) {
+      member("globals", "vv_global_table");
+      member("global_count", std::to_string(globals_.size()));
+    }
     s += "static constexpr vv_plugin vv_descriptor() {\n" + members + "  return vv_d;\n}\n";
     s += "VV_PLUGIN_EXPORT constexpr vv_plugin vv_plugin_descriptor = vv_descriptor();\n";
     w_.generated(s);
+  }
+
+  // The program's globals (vv_plugin::globals) and the checkpoint's entry
+  // points: a slot per global (model/state.hpp), made in source order after
+  // every global (they are all above), and the host's table of them.
+  std::string global_table() {
+    globals_ = find_globals(p_);
+    const std::string n = std::to_string(globals_.size());
+    std::string s;
+    if (globals_.empty()) {
+      s += "static vv::model::global_slot<vv_traits>* const vv_global_slots = nullptr;\n";
+    } else {
+      s += "static vv::model::global_slot<vv_traits> vv_global_slots[] = {\n";
+      for (const global_variable& g : globals_) {
+        const std::string texts = cpp_string_literal(g.name) + ", " + cpp_string_literal(g.type) + ", " +
+                                  std::to_string(g.line);
+        if (g.in_function)
+          s += "    vv::model::static_in_function<vv_traits>(" + texts + "),\n";
+        else
+          s += "    vv::model::global_of<vv_traits, decltype(" + g.name + ")>(" + texts + ", " + g.name + "),\n";
+      }
+      s += "};\nstatic vv_global_entry vv_global_table[" + n + "];\n"
+           "[[maybe_unused]] static const bool vv_globals_listed =\n"
+           "    vv::model::list_globals(vv_global_slots, vv_global_table, " + n + ");\n";
+    }
+    s += "static const char* vv_entry_save_state(const void** vv_data, std::size_t* vv_size) {\n"
+         "  return vv::model::save_state_entry(vv_model, vv_global_slots, " + n + ", vv_data, vv_size);\n}\n";
+    s += "static const char* vv_entry_restore_state(const void* vv_data, std::size_t vv_size) {\n"
+         "  return vv::model::restore_state_entry(vv_model, vv_global_slots, " + n + ", vv_data, vv_size);\n}\n";
+    return s;
   }
 
   // The descriptor's functions that instantiate vvlib for the model's
@@ -715,6 +761,7 @@ class emitter {
 
   const program& p_;
   const emit_options& o_;
+  std::vector<global_variable> globals_;
   writer w_;
   std::unordered_set<const token*> value_init_;
 };

@@ -25,6 +25,8 @@ namespace vvc {
 struct emit_options {
   std::string version;     // written into the header comment
   std::string source_dir;  // the main .vvp's folder: relative paths resolve against it
+  std::string program_name;  // the main .vvp's file name (vv_plugin::program_name)
+  std::string program_hash;  // of the text of every .vvp read (vv_plugin::program_hash)
 };
 
 std::string emit(const program& p, const emit_options& options);

@@ -1,5 +1,8 @@
 #include "source.hpp"
 
+#include <cstdint>
+#include <cstdio>
+
 #include <vv/io/files.hpp>
 
 namespace vvc {
@@ -52,6 +55,23 @@ const source_file* source_set::load(const std::string& path, std::string* why) {
 std::vector<std::string> source_set::paths() const {
   std::vector<std::string> out;
   for (const auto& f : files_) out.push_back(f->path);
+  return out;
+}
+
+std::string source_set::text_hash() const {
+  // Two FNV-1a streams, with a separator after each file.
+  std::uint64_t a = 0xcbf29ce484222325ULL, b = 0x84222325cbf29ce4ULL;
+  for (const auto& f : files_) {
+    for (unsigned char c : f->text) {
+      a = (a ^ c) * 0x100000001b3ULL;
+      b = (b ^ c) * 0x100000001b3ULL + 0x9e3779b97f4a7c15ULL;
+    }
+    a = (a ^ 0xffu) * 0x100000001b3ULL;
+    b = (b ^ 0xfeu) * 0x100000001b3ULL;
+  }
+  char out[33];
+  std::snprintf(out, sizeof out, "%016llx%016llx", static_cast<unsigned long long>(a),
+                static_cast<unsigned long long>(b));
   return out;
 }
 

@@ -32,6 +32,9 @@ class source_set {
   const source_file* add(std::string path, std::string text);
   //! The paths of every file read, in order.
   std::vector<std::string> paths() const;
+  //! A hash of the text of every file read, in order (32 hex digits): a
+  //! checkpoint is only resumed by the program it was saved from.
+  std::string text_hash() const;
 
  private:
   std::vector<std::unique_ptr<source_file>> files_;

@@ -20,7 +20,8 @@ void run(translation& t, const source_file& file, std::string source_dir) {
         b.keyword->text == "edge" ? t.fields.edge : b.keyword->text == "vertex" ? t.fields.vertex : t.fields.mesh;
     for (const field& f : b.fields) names.emplace_back(f.name->text);
   }
-  emit_options options{version(), std::move(source_dir)};
+  std::string name = file.path.substr(file.path.find_last_of('/') + 1);
+  emit_options options{version(), std::move(source_dir), name, t.sources.text_hash()};
   t.cpp = emit(p, options);
   t.declarations = emit_declarations(p, options);
   t.ok = true;
