@@ -159,8 +159,18 @@ TEST(EventLog, OnlyTheModelsEventsAreInASession) {
   std::string error;
   EXPECT_FALSE(vvi::event_log::parse("step 2\nscreenshot a.png\n", "s.vvs", log, error));
   EXPECT_EQ(error,
-            "s.vvs:2: 'screenshot' is not one of the model's events (step, end, reread, set, action, pick-action) "
-            "or rewind");
+            "s.vvs:2: 'screenshot' is not one of the model's events (step, end, reread, set, action, pick-action), "
+            "rewind or resume");
+}
+
+TEST(EventLog, AResumeStartsItAgainFromTheCheckpointWithTheValuesSetSoFar) {
+  vvi::event_log log = log_of("step 3\nset a=1\nresume \"my state.ckpt\"\nstep 2\n");
+  EXPECT_EQ(log.resumed_from, "my state.ckpt");
+  EXPECT_EQ(log.steps(), 2u);
+  EXPECT_EQ(log.text(), "set a=1\nresume \"my state.ckpt\"\nstep 2\n");
+  // Read back, the same log; a rewind after it starts from start again.
+  EXPECT_EQ(log_of(log.text()), log);
+  EXPECT_EQ(log_of(log.text() + "rewind\n").resumed_from, "");
 }
 
 TEST(EventLog, UpToKeepsTheEventsBeforeAndTheStepsDoneOfTheOneAt) {

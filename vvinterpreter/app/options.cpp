@@ -125,6 +125,11 @@ void batch_options(CLI::App& app, options& o) {
                o.events_at.emplace_back(step, command::labelled(command::pick_action, n));
              });
   text(app, "--replay", "FILE", "batch", "run the events of a session the viewer saved, before the steps", o.replay);
+  text(app, "--checkpoint", "FILE", "batch",
+       "after the steps (before the end block), save the model's whole state to go on from it later", o.checkpoint);
+  text(app, "--resume", "FILE", "batch",
+       "go on from a checkpoint instead of running start: --steps N then runs N more steps (also the viewer)",
+       o.resume);
   text(app, "--export", "FILE", "batch", "write a mesh after the steps: .vvm .obj .off .ply .stl .vtp", o.export_path);
   text(app, "--screenshot", "FILE", "batch", "render a PNG after the steps (offscreen)", o.screenshot);
   with_value(app, "--size", "WxH", "batch", "the screenshot's size (default 800x600)", [&o](const std::string& v) {
@@ -252,6 +257,9 @@ void check_whole(const CLI::App& app, const std::vector<std::string>& models, op
   if (o.batch && !o.script.empty()) throw usage_error{"--script drives the viewer; it cannot be used with --batch"};
   if (o.rebuild && !o.batch && !o.compile_only)
     throw usage_error{"--rebuild is for --batch and --compile-only (the viewer rebuilds with its Recompile button)"};
+  if (!o.batch && !o.checkpoint.empty())
+    throw usage_error{"--checkpoint is for --batch (the viewer saves checkpoints with its panel or the command "
+                      "checkpoint FILE)"};
   if (!o.batch && (!o.replay.empty() || !o.events_at.empty()))
     throw usage_error{"--replay, --action and --pick-action are for --batch (the viewer runs a session with --script)"};
 }

@@ -39,6 +39,8 @@ struct options {
   //! --action NAME@STEP and --pick-action LABEL@STEP, in order: after step STEP.
   std::vector<std::pair<unsigned long, command>> events_at;
   std::string replay;
+  std::string checkpoint;  // --checkpoint: the state after the steps
+  std::string resume;      // --resume: go on from a checkpoint instead of start
   std::string color_by;
   std::string script;
   std::string frames = "frames";

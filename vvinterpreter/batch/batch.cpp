@@ -48,13 +48,19 @@ int list_parameters(const options& o, const build_result& b) {
 bool read_session(const options& o, event_log& log, std::string& error) {
   log.initial.clear();
   for (const auto& [name, text] : o.parameter_values) set_setting(log.initial, name, text);
+  log.resumed_from = o.resume;
   if (o.replay.empty()) return true;
   std::optional<std::string> text = read_file(o.replay);
   if (!text) return error = o.replay + ": cannot read the session", false;
   event_log session;
   if (!event_log::parse(*text, o.replay, session, error)) return false;
+  if (!session.resumed_from.empty() && !o.resume.empty())
+    return error = o.replay + ": the session goes on from the checkpoint " + session.resumed_from +
+                   ", and --resume names another start (" + o.resume + ")",
+           false;
   for (const parameter_setting& s : session.initial) set_setting(log.initial, s.name, s.text);
   log.events = session.events;
+  if (log.resumed_from.empty()) log.resumed_from = session.resumed_from;
   return true;
 }
 
@@ -119,6 +125,8 @@ int run_model_headless(const options& o) {
   batch_run run(c, view);
   double seconds = 0;
   if (std::string e = run_steps(o, c, run, seconds); !e.empty()) return fail(e);
+  if (!o.checkpoint.empty())
+    if (std::string e = run(command::with_path(command::checkpoint, o.checkpoint)); !e.empty()) return fail(e);
   if (o.end_block)
     if (std::string e = run(command::of(command::end)); !e.empty()) return fail(e);
   if (!o.quiet) {

@@ -12,9 +12,9 @@ struct command {
   enum kind_t {
     // What changes the model. step, end, reread, set, action and
     // pick_action are its events: the event log keeps them.
-    step, run, animate, stop, rewind, end, reread, reload, recompile, set, action, pick_action,
+    step, run, animate, stop, rewind, resume, end, reread, reload, recompile, set, action, pick_action,
     // Looking into it and writing it out.
-    inspect, export_mesh, plots, save_params, save_session,
+    inspect, export_mesh, plots, save_params, save_session, checkpoint,
     // The view.
     screenshot, window_screenshot, fit, rotate, zoom, reset_view, show, color_by,
     // How the viewer goes on.
@@ -27,7 +27,7 @@ struct command {
   //! set NAME=VALUE, action NAME, export MESH, color-by NAME ("" : none),
   //! show WHAT
   std::string name, value;
-  std::string path;          //!< screenshot, window-screenshot, export, plots, save-session
+  std::string path;          //!< screenshot, window-screenshot, export, plots, save-session, checkpoint, resume
   bool on = true;            //!< show, replay, rewind-on-change
   int line = 0;              //!< where it was read (0: not from a file)
 

@@ -37,6 +37,7 @@ unsigned long event_log::steps_before(std::size_t index) const {
 event_log event_log::up_to(std::size_t index, unsigned long extra_steps) const {
   event_log out;
   out.initial = initial;
+  out.resumed_from = resumed_from;
   for (std::size_t i = 0; i < index && i < events.size(); ++i) out.events.push_back(events[i]);
   if (extra_steps > 0 && index < events.size() && events[index].kind == command::step)
     out.append(command::steps(std::min(extra_steps, events[index].number)));
@@ -53,7 +54,8 @@ std::vector<parameter_setting> event_log::settings_after() const {
 std::string event_log::text() const {
   std::string out;
   for (const parameter_setting& s : initial) out += command_text(command::named(command::set, s.name, s.text)) + "\n";
-  if (!initial.empty()) out += "rewind\n";
+  if (!resumed_from.empty()) out += command_text(command::with_path(command::resume, resumed_from)) + "\n";
+  else if (!initial.empty()) out += "rewind\n";
   for (const command& e : events) out += command_text(e) + "\n";
   return out;
 }
@@ -63,14 +65,15 @@ bool event_log::parse(const std::string& text, const std::string& name, event_lo
   if (!error.empty()) return false;
   event_log log;
   for (const command& c : commands) {
-    if (c.kind == command::rewind) {
+    if (c.kind == command::rewind || c.kind == command::resume) {
       log.initial = log.settings_after();
       log.events.clear();
+      log.resumed_from = c.kind == command::resume ? c.path : "";
     } else if (is_event(c.kind)) {
       log.append(c);
     } else {
       error = name + ":" + std::to_string(c.line) + ": '" + command_word(c.kind) +
-              "' is not one of the model's events (step, end, reread, set, action, pick-action) or rewind";
+              "' is not one of the model's events (step, end, reread, set, action, pick-action), rewind or resume";
       return false;
     }
   }
@@ -79,7 +82,7 @@ bool event_log::parse(const std::string& text, const std::string& name, event_lo
 }
 
 bool operator==(const event_log& a, const event_log& b) {
-  if (a.initial.size() != b.initial.size() || a.events != b.events) return false;
+  if (a.initial.size() != b.initial.size() || a.events != b.events || a.resumed_from != b.resumed_from) return false;
   for (std::size_t i = 0; i < a.initial.size(); ++i)
     if (a.initial[i].name != b.initial[i].name || a.initial[i].text != b.initial[i].text) return false;
   return true;

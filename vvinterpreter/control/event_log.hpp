@@ -8,7 +8,9 @@
 // Its text is the command language (command_text.hpp):
 //
 //   set spacing=3        the values the model started with, before its
-//   rewind               start block (when there are any), then
+//   rewind               start block (when there are any), or after the
+//                        checkpoint it went on from ("resume FILE" in
+//                        place of "rewind"), then
 //   step 2               its events
 //   pick-action 17
 //   end
@@ -28,6 +30,9 @@ class event_log {
   std::vector<parameter_setting> initial;
   //! What changed it since, in order (is_event commands only).
   std::vector<command> events;
+  //! The checkpoint the model went on from instead of its start ("" : it
+  //! started); `initial` then applies after the checkpoint's state.
+  std::string resumed_from = "";
 
   //! Appends an event; steps right after steps are one event ("step 5").
   void append(const command& event);
@@ -45,7 +50,7 @@ class event_log {
   //! The log in the command language, a line each.
   std::string text() const;
   //! Reads the command language: a `rewind` starts the log again with the
-  //! values set so far. False with error "name:line: problem" on a line
+  //! values set so far, a `resume FILE` too, from the checkpoint. False with error "name:line: problem" on a line
   //! that is not a command, or not an event or a rewind.
   static bool parse(const std::string& text, const std::string& name, event_log& out, std::string& error);
 

@@ -141,6 +141,14 @@ bool model_controller::carry_out(const command& c, double now) {
       if (!runner_.plugin_path().empty())
         load_ = load_plan{runner_.plugin_path(), event_log{runner_.parameter_settings(), {}}, "rewound " + o_.model};
       return true;
+    case command::resume:
+      if (runner_.plugin_path().empty()) {
+        std::string e = "resume " + c.path + ": no model is loaded";
+        error(e, e);
+      } else {
+        load_ = load_plan{runner_.plugin_path(), event_log{{}, {}, c.path}, "resumed " + o_.model + " from " + c.path};
+      }
+      return true;
     case command::end:
     case command::reread:
     case command::action:
@@ -153,7 +161,8 @@ bool model_controller::carry_out(const command& c, double now) {
     case command::export_mesh:
     case command::plots:
     case command::save_params:
-    case command::save_session: write_out(c); return true;
+    case command::save_session:
+    case command::checkpoint: write_out(c); return true;
     case command::replay: record_.replay = c.on; return true;
     case command::rewind_on_change: record_.rewind_on_change = c.on; return true;
     case command::wait: wait_until_ = now + c.number / 1000.0; return true;
@@ -296,6 +305,8 @@ void model_controller::write_out(const command& c) {
     e = c.name.empty() ? runner_.export_to(c.path) : runner_.export_to(c.path, comma_list(c.name));
   } else if (c.kind == command::plots) {
     e = write_plots(c.path, runner_.model()->plots());
+  } else if (c.kind == command::checkpoint) {
+    e = runner_.save_checkpoint(c.path);
   } else if (c.kind == command::save_session) {
     std::string text = "# vv session of " + o_.model + ": vvinterpreter --batch --replay FILE MODEL runs it\n" +
                        log_.text();

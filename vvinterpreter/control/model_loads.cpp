@@ -53,6 +53,8 @@ std::optional<model_controller::load_plan> model_controller::plan_for(const buil
   }
   bool first = !runner_.model();
   event_log log = record_.replay ? log_ : event_log{runner_.parameter_settings(), {}};
+  // --resume: the first model goes on from the checkpoint.
+  if (first && log.events.empty() && log.resumed_from.empty()) log.resumed_from = o_.resume;
   return load_plan{b.plugin, log, (first ? "loaded " : "reloaded ") + o_.model + cached,
                    b.plugin != record_.plugin && !record_.plugin.empty()};
 }
@@ -77,11 +79,15 @@ void model_controller::begin_load() {
   std::vector<parameter_setting> before = runner_.parameter_settings();
   std::string plugin = plan.plugin;
   std::vector<parameter_setting> initial = plan.log.initial;
+  std::string resume = plan.log.resumed_from;
   unsigned long steps = plan.log.steps();
-  run_job("loading", steps ? "loading and running to step " + std::to_string(steps) : "loading",
-          [this, plugin, initial] {
+  std::string what = resume.empty() ? "loading" : "loading from " + resume;
+  if (steps) what += resume.empty() ? " and running to step " + std::to_string(steps)
+                                    : " and running " + std::to_string(steps) + " steps";
+  run_job("loading", what,
+          [this, plugin, initial, resume] {
             runner_.use_settings(initial);
-            return runner_.load(plugin);
+            return runner_.load(plugin, 0, resume);
           },
           [this, before](bool ok) {
             if (!ok) runner_.use_settings(before);
@@ -103,6 +109,7 @@ void model_controller::loaded(bool ok) {
   replay_state r;
   r.plan = std::move(plan);
   r.done.initial = runner_.parameter_settings();  // as the model took them
+  r.done.resumed_from = r.plan.log.resumed_from;
   loading_.reset();
   replay_ = std::move(r);
   refresh_facts();

@@ -1,6 +1,9 @@
 #include "runner/model_runner.hpp"
 
+#include <vv/io/output_file.hpp>
+
 #include "app/files.hpp"
+#include "runner/checkpoint_file.hpp"
 #include "runner/mesh_export.hpp"
 #include "runner/output_file.hpp"
 
@@ -37,12 +40,25 @@ build_result model_runner::build(bool force, std::function<void()> compiling) co
   return build_model(o_.model, s);
 }
 
-bool model_runner::load(const std::string& plugin_path, unsigned steps) {
+bool model_runner::load(const std::string& plugin_path, unsigned steps, const std::string& resume) {
   std::string error;
   std::unique_ptr<session> fresh = session::load(plugin_path, session_settings_for(o_), error);
   if (!fresh) {
     error_ = error;
     return false;
+  }
+  if (!resume.empty()) {
+    // The checkpoint's state in place of start; the user's values after it.
+    checkpoint c;
+    error = read_checkpoint(resume, c);
+    const vv_plugin& m = fresh->model();
+    if (error.empty()) error = check_checkpoint_program(resume, c, m.program_name, m.program_hash);
+    if (error.empty() && !fresh->resume(c.state, c.step)) error = resume + ": " + fresh->error();
+    if (!error.empty()) {
+      fresh->skip_close();  // not started, or half restored: its close block must not run
+      error_ = error;
+      return false;
+    }
   }
   // The user's values replace the file's before start reads them.
   std::vector<parameter_setting> kept = settings_;
@@ -52,7 +68,7 @@ bool model_runner::load(const std::string& plugin_path, unsigned steps) {
     return false;
   }
   settings_ = kept;
-  if (!fresh->start()) {
+  if (resume.empty() && !fresh->start()) {
     error_ = fresh->error();
     return false;  // `fresh` closes and unloads; the running model stays
   }
@@ -193,6 +209,27 @@ std::vector<std::string> model_runner::file_objects() const {
   for (std::size_t at = 0, end; (end = lines.find('\n', at)) != std::string::npos; at = end + 1)
     out.push_back(lines.substr(at, end - at));
   return out;
+}
+
+std::string model_runner::save_checkpoint(const std::string& path) const {
+  if (!model_) return "checkpoint " + path + ": no model is loaded";
+  checkpoint c;
+  if (std::string e = model_->save_state(c.state); !e.empty()) return e;
+  const vv_plugin& m = model_->model();
+  c.program = m.program_name;
+  c.program_hash = m.program_hash;
+  c.step = model_->steps_done();
+  c.seed = o_.seed;
+  for (const vv_param_entry* p : parameters_of(*model_)) c.parameters.emplace_back(p->name, parameter_text(*p));
+  const std::string text = checkpoint_text(c);
+  return write_output(path, [&](const std::string& to) -> std::string {
+    try {
+      vv::io::write_text_file(to, text);
+    } catch (const std::exception& e) {
+      return e.what();
+    }
+    return "";
+  });
 }
 
 std::string model_runner::export_to(const std::string& path) const { return export_to(path, o_.meshes); }

@@ -34,7 +34,11 @@ class model_runner {
   //! one's close block runs then); when loading or start fail, the running
   //! model stays and false is returned. A step that fails on the way leaves
   //! the new model at the step before, with error() set.
-  bool load(const std::string& plugin_path, unsigned steps = 0);
+  //! With `resume` (a checkpoint file), the fresh instance takes the
+  //! checkpoint's state instead of running start, and the user's parameter
+  //! values after it; a checkpoint that cannot be read, or is of another
+  //! program, fails the load as start does.
+  bool load(const std::string& plugin_path, unsigned steps = 0, const std::string& resume = "");
   //! The same plugin again, from a fresh start.
   bool rewind(unsigned steps = 0) { return load(plugin_, steps); }
   bool step();
@@ -67,6 +71,8 @@ class model_runner {
   std::string describe_vertex(unsigned label, std::string& text) const;
   //! The files the model's file objects read (for watching them).
   std::vector<std::string> file_objects() const;
+  //! Writes the model's whole state to a checkpoint file; "" or the error.
+  std::string save_checkpoint(const std::string& path) const;
   //! Writes the chosen meshes to a file (the format by its extension),
   //! through runner/output_file.hpp.
   std::string export_to(const std::string& path) const;

@@ -150,6 +150,37 @@ bool session::run_pick(unsigned label) {
   return run_between_steps("pick of vertex " + std::to_string(label), [&m, label] { return m.pick(label); });
 }
 
+bool session::resume(const std::string& state, unsigned step) {
+  const vv_plugin& m = plugin_->model();
+  fault_guard::begin("resume");
+  const char* e = m.restore_state(state.data(), state.size());
+  fault_guard::finish();
+  if (e) {
+    error_ = std::string("the checkpoint does not fit the model: ") + e;
+    return false;
+  }
+  steps_ = step;
+  return check_neighbourhoods("resume");
+}
+
+std::string session::save_state(std::string& out) const {
+  const vv_plugin& m = plugin_->model();
+  std::string unsaveable;
+  for (std::size_t i = 0; i < m.global_count; ++i) {
+    const vv_global_entry& g = m.globals[i];
+    if (g.kept != VV_GLOBAL_UNSAVEABLE) continue;
+    unsaveable += "\n" + model_ + ":" + std::to_string(g.line) + ": " + g.name + " (" + g.type + "): " +
+                  (g.why ? g.why : "cannot be saved");
+  }
+  if (!unsaveable.empty())
+    return model_ + ": a checkpoint cannot hold the model's whole state: these globals cannot be saved" + unsaveable;
+  const void* data = nullptr;
+  std::size_t size = 0;
+  if (const char* e = m.save_state(&data, &size)) return model_ + ": a checkpoint cannot hold the model: " + e;
+  out.assign(static_cast<const char*>(data), size);
+  return "";
+}
+
 bool session::check_neighbourhoods(const std::string& after) {
   if (!check_) return true;
   const char* broken = plugin_->model().check();

@@ -46,6 +46,13 @@ class session {
   //! Drawing is announced to the supervisor (timed, sampled) like the
   //! other blocks: for a single drawing (batch), not every frame.
   void announce_drawing(bool on) { announce_drawing_ = on; }
+  //! Instead of start: the model's state from a checkpoint (its bytes),
+  //! which was saved after `step` steps. False with the error set; the
+  //! model is then half restored and must be unloaded.
+  bool resume(const std::string& state, unsigned step);
+  //! The model's whole state, for a checkpoint; "" or the error, which
+  //! names every global the checkpoint cannot hold with its .vvp line.
+  std::string save_state(std::string& out) const;
   //! Runs the close block (once); the plugin stays loaded until destruction.
   void close();
   //! A model that never started is unloaded without its close block.
