@@ -384,9 +384,9 @@ class emitter {
     s += "static const void* const* vv_entry_error_frames(std::size_t* vv_count) {\n"
          "  *vv_count = vv_model.host_exchange().error_frames.size();\n"
          "  return vv_model.host_exchange().error_frames.data();\n}\n";
-    s += global_table();
     s += apart_functions(false);
     s += "#ifndef VV_DECLARATIONS_APART\n" + apart_functions(true) + "#endif\n";
+    s += global_table();
     s += mesh_table();
     s += parameter_table();
     s += mesh_set_entry_points();
@@ -447,9 +447,9 @@ class emitter {
            "    vv::model::list_globals(vv_global_slots, vv_global_table, " + n + ");\n";
     }
     s += "static const char* vv_entry_save_state(const void** vv_data, std::size_t* vv_size) {\n"
-         "  return vv::model::save_state_entry(vv_model, vv_global_slots, " + n + ", vv_data, vv_size);\n}\n";
+         "  return vv_decl_save_state(vv_model, vv_global_slots, " + n + ", vv_data, vv_size);\n}\n";
     s += "static const char* vv_entry_restore_state(const void* vv_data, std::size_t vv_size) {\n"
-         "  return vv::model::restore_state_entry(vv_model, vv_global_slots, " + n + ", vv_data, vv_size);\n}\n";
+         "  return vv_decl_restore_state(vv_model, vv_global_slots, " + n + ", vv_data, vv_size);\n}\n";
     return s;
   }
 
@@ -466,6 +466,13 @@ class emitter {
              "vv::model::write_file(vv_p, vv_m, vv_path, vv_max_face)");
     function("vv_decl_geometry(" + model + "const mesh& vv_m, std::size_t vv_max_face, vv_geometry* vv_out)",
              "vv::model::geometry(vv_p, vv_m, vv_max_face, vv_out)");
+    // Checkpoints: the context, the properties, the proxy and the
+    // generators; the globals' own parts come through their slots.
+    const std::string slots = "vv::model::global_slot<vv_traits>* vv_g, std::size_t vv_n, ";
+    function("vv_decl_save_state(" + model + slots + "const void** vv_data, std::size_t* vv_size)",
+             "vv::model::save_state_entry(vv_p, vv_g, vv_n, vv_data, vv_size)");
+    function("vv_decl_restore_state(" + model + slots + "const void* vv_data, std::size_t vv_size)",
+             "vv::model::restore_state_entry(vv_p, vv_g, vv_n, vv_data, vv_size)");
     if (p_.global_meshes.empty()) return s;
     std::string all =
         "const vv::model::named_mesh<vv_traits> (&vv_all)[" + std::to_string(p_.global_meshes.size()) + "]";

@@ -31,9 +31,13 @@ std::string spell(const pieces& run, std::size_t from, std::size_t to) {
   std::string out;
   for (std::size_t i = from; i < to; ++i) {
     const piece& p = run[i];
+    if (p.kind == piece_kind::group) {  // std::function<double(double)>, bounds [3]
+      out += std::string(p.tok->text) + (p.parts.empty() ? "" : spell(p.parts[0], 0, p.parts[0].size())) +
+             std::string(p.close ? p.close->text : "");
+      continue;
+    }
     if (p.kind != piece_kind::token) {
-      out += p.kind == piece_kind::group ? std::string(p.tok->text) + "..." + std::string(p.close ? p.close->text : "")
-                                         : std::string("...");
+      out += "...";
       continue;
     }
     std::string_view t = p.tok->text;
@@ -111,15 +115,20 @@ class finder {
     if (s >= e) return;
     if (is_word_piece(run[s]) && run[s].tok->is_word("namespace")) return namespace_body(run, s, e, scope);
     if (defines_no_variable(run[s])) return;
-    if (run[e - 1].kind == piece_kind::body) return;  // a function's definition
+    if (run[e - 1].kind == piece_kind::body && !run[e - 1].lambda) return;  // a function's definition
     std::vector<range> declarators = split_at_commas(run, s, e);
     std::string specifiers;
     for (std::size_t i = 0; i < declarators.size(); ++i) {
       auto [ds, de] = declarators[i];
       std::size_t name = de;
       std::size_t stop = de;
+      int angle = 0;  // inside template arguments: std::function<double(double)>
       for (std::size_t k = ds; k < de; ++k) {
         const piece& q = run[k];
+        if (is_token(q, "<")) ++angle;
+        else if (is_token(q, ">")) --angle;
+        else if (is_token(q, ">>")) angle -= 2;
+        if (angle > 0) continue;
         if (is_token(q, "=") || is_group(q, "(") || is_group(q, "{") || is_group(q, "[")) {
           stop = k;
           break;

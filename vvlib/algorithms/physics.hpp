@@ -54,6 +54,11 @@ struct RestFromRecords {
 //! The same rest length for every spring.
 struct UniformRest {
   double length;
+  //! The fields, for a model's checkpoint (model/state_values.hpp).
+  template <class F>
+  void vv_fields(F&& f) {
+    f("length", length);
+  }
   template <class V>
   double operator()(const V&, const V&) const {
     return length;
@@ -191,6 +196,12 @@ class MassSpring {
   double drag = 0;       // force -drag * velocity
   double mass = 1;
   double dt = 0.01;
+
+  //! The fields, for a model's checkpoint (model/state_values.hpp).
+  template <class F>
+  void vv_fields(F&& f) {
+    f("stiffness", stiffness), f("drag", drag), f("mass", mass), f("dt", dt);
+  }
 
   //! The springs' force on v, in the old state.
   template <class Rest>

@@ -118,8 +118,7 @@ typedef struct vv_action_entry {
 /* How a checkpoint keeps a global (vv_global_entry::kept). */
 #define VV_GLOBAL_SAVED 0      /* its value is saved and restored */
 #define VV_GLOBAL_CONSTANT 1   /* const, or a reference: it never changes */
-#define VV_GLOBAL_FROM_FILE 2  /* a file object: made from its file when the model loads */
-#define VV_GLOBAL_UNSAVEABLE 3 /* a checkpoint cannot hold it (why says why) */
+#define VV_GLOBAL_UNSAVEABLE 2 /* a checkpoint cannot hold it (why says why) */
 
 /* A global variable of the program, as the translator found it: every
  * top-level variable (meshes and parameters too), and the static

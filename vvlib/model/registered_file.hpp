@@ -29,6 +29,14 @@ class registered_file : public file_object {
   //! vv 1.1's name for path().
   const std::string& getFilename() const { return path_; }
 
+  //! Its file and its contents, as a model's checkpoint saves them (the
+  //! contents may differ from the file's: setPoints, a file changed since).
+  template <class F>
+  void vv_state_fields(F&& f) {
+    f("path", path_, 0);
+    f("contents", contents_, 0);
+  }
+
   //! Reads the file again; on an error the object keeps its contents and
   //! the error (vv::error, with the file and the line) is thrown. Without a
   //! file, nothing happens.

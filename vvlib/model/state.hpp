@@ -61,13 +61,14 @@ global_slot<Tr> global_of(const char* name, const char* type, int line, T& objec
     (void)object;
   } else if constexpr (std::is_reference_v<T> || std::is_const_v<U>) {
     g.entry.kept = VV_GLOBAL_CONSTANT;  // a constant, or a reference (always to the same object)
-  } else if constexpr (std::is_base_of_v<file_object, U>) {
-    g.entry.kept = VV_GLOBAL_FROM_FILE;
-    g.as_file = &object;
   } else {
+    if constexpr (std::is_base_of_v<file_object, U>) g.as_file = &object;
     g.why = why_unsaveable(object);
+    // The declared type is named beside the global already.
+    const std::string own = state_detail::type_name<U>() + ": ";
+    if (g.why.compare(0, own.size(), own) == 0) g.why.erase(0, own.size());
     g.entry.kept = g.why.empty() ? VV_GLOBAL_SAVED : VV_GLOBAL_UNSAVEABLE;
-    g.object = &object;
+    g.object = const_cast<void*>(static_cast<const volatile void*>(&object));  // volatile globals too
     g.save = [](void* o, state_saving<Tr>& a) { state_value(a, *static_cast<U*>(o)); };
     g.load = [](void* o, state_loading<Tr>& a) { state_value(a, *static_cast<U*>(o)); };
   }

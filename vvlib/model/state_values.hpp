@@ -10,9 +10,10 @@
 //   members in order and their properties); generators and distributions
 //   of <random> (their text form, which the standard makes exact); structs
 //   that list their fields (vv_state_fields, which vvc writes for property
-//   blocks, or vv_fields); classes without data (algorithms::Insert).
-//   File objects (util::Function, ...) are made from their files when the
-//   model loads: nothing of them is saved.
+//   blocks, or vv_fields), among them the file objects util::Function,
+//   Contour, Palette and Materials (their file's name and their contents,
+//   which the program may have changed); util::Colour; classes without
+//   data (algorithms::Insert).
 //
 // Anything else cannot be saved (a pointer, a std::function, an unordered
 // container, whose order a restore cannot promise, a struct that does not
@@ -44,12 +45,12 @@
 
 #include <glm/glm.hpp>
 
+#include <util/colour.hpp>
 #include <util/point.hpp>
 #include <vv/context.hpp>
 #include <vv/mesh.hpp>
 #include <vv/vertex.hpp>
 
-#include "file_object.hpp"
 #include "state_stream.hpp"
 
 namespace vv::model {
@@ -167,7 +168,7 @@ struct being_checked {
 template <class A, class T>
 void number(A& a, T& v) {
   if constexpr (A::mode == state_mode::check) {
-    (void)a, (void)v;
+    (void)&a, (void)&v;  // unused here (v may be volatile: no read)
   } else if constexpr (std::is_floating_point_v<T> && sizeof(T) > 8) {
     static_assert(std::numeric_limits<T>::digits == 64, "long double is the x87 80-bit format");
     unsigned char bytes[sizeof(T)] = {};
@@ -260,7 +261,7 @@ void check_type(state_checking& a) {
 template <class A, class Tr>
 void handle(A& a, vertex<Tr>& v) {
   if constexpr (A::mode == state_mode::check) {
-    (void)a, (void)v;
+    (void)&a, (void)&v;  // unused here (v may be volatile: no read)
   } else if constexpr (!std::is_same_v<vertex<Tr>, vertex<typename std::remove_reference_t<decltype(a.ctx)>::traits_type>>) {
     cannot<A, vertex<Tr>>(a, "a vertex of another kind of model");
   } else if constexpr (A::mode == state_mode::save) {
@@ -407,6 +408,8 @@ void state_value(A& a, T& v) {
     members(a, v);
   } else if constexpr (is_instance<U, util::Point>::value) {
     state_value(a, v.glm());
+  } else if constexpr (is_instance<U, util::Colour>::value) {
+    for (int i = 0; i < 4; ++i) state_value(a, v.data()[i]);
   } else if constexpr (is_glm_vec<U>::value) {
     for (glm::length_t i = 0; i < U::length(); ++i) state_value(a, v[i]);
   } else if constexpr (is_glm_mat<U>::value) {
@@ -440,8 +443,6 @@ void state_value(A& a, T& v) {
     }
   } else if constexpr (is_instance<U, std::function>::value) {
     cannot<A, U>(a, "a function object (what it calls cannot be saved)");
-  } else if constexpr (std::is_base_of_v<file_object, U>) {
-    // Made from its file when the model loads.
   } else if constexpr (is_random_object<U>::value) {
     random_object(a, v);
   } else if constexpr (has_state_fields<U>::value || vv::detail::has_fields<U>::value) {

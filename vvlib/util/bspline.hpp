@@ -21,6 +21,13 @@ struct control_point {
   Point<double> pos;
   unsigned multiplicity = 1;
 
+  //! The fields, for a model's checkpoint (model/state_values.hpp).
+  template <class F>
+  void vv_fields(F&& f) {
+    f("pos", pos);
+    f("multiplicity", multiplicity);
+  }
+
   friend bool operator==(const control_point& a, const control_point& b) {
     return a.pos == b.pos && a.multiplicity == b.multiplicity;
   }

@@ -32,6 +32,11 @@ struct curve {
   vlab::contour_file file;
   std::vector<Point<double>> polygon;  //!< the spline's polygon (closed: extended)
   Point<double> min, max;
+
+  template <class F>
+  void vv_fields(F&& f) {
+    f("file", file), f("polygon", polygon), f("min", min), f("max", max);
+  }
 };
 }  // namespace contour_detail
 

@@ -50,6 +50,13 @@ struct contour_file {
   bool endpoint_interpolating = false;  //!< 'e' in a cver 1 2/1 3 type
   unsigned samples = 8;                 //!< cver 1 3's; the editor's default otherwise
   std::vector<bspline::control_point> points;
+
+  //! The fields, for a model's checkpoint (model/state_values.hpp).
+  template <class F>
+  void vv_fields(F&& f) {
+    f("version", version), f("name", name), f("closed", closed);
+    f("endpoint_interpolating", endpoint_interpolating), f("samples", samples), f("points", points);
+  }
 };
 
 namespace detail {

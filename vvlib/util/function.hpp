@@ -35,6 +35,11 @@ struct curve {
   std::vector<Point<double>> polygon;  //!< control points repeated by multiplicity
   std::vector<double> knot_x;          //!< x(t) at the knots 0, 1, ..., n-2
   Point<double> min, max;
+
+  template <class F>
+  void vv_fields(F&& f) {
+    f("file", file), f("polygon", polygon), f("knot_x", knot_x), f("min", min), f("max", max);
+  }
 };
 }  // namespace function_detail
 

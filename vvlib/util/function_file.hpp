@@ -52,6 +52,15 @@ struct function_file {
   double background_x = 0, background_y = 0;
   double range_min = 0, range_max = 1;  //!< original format only
   std::vector<bspline::control_point> points;
+
+  //! The fields, for a model's checkpoint (model/state_values.hpp).
+  template <class F>
+  void vv_fields(F&& f) {
+    f("version", version), f("name", name), f("samples", samples), f("flip", flip);
+    f("has_background", has_background), f("background", background);
+    f("background_x", background_x), f("background_y", background_y);
+    f("range_min", range_min), f("range_max", range_max), f("points", points);
+  }
 };
 
 //! What is wrong with these control points as a function ("" if nothing),

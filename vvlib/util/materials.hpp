@@ -51,10 +51,22 @@ struct Material {
   GLfloat specular[4] = {0.0f, 0.0f, 0.0f, 1.0f};
   GLfloat shiny = 0.0f;         //!< shininess, 0-128
   GLfloat transparency = 0.0f;  //!< 0 opaque, 1 transparent
+
+  //! The fields, for a model's checkpoint (model/state_values.hpp).
+  template <class F>
+  void vv_fields(F&& f) {
+    f("ambient", ambient), f("diffuse", diffuse), f("emission", emission), f("specular", specular);
+    f("shiny", shiny), f("transparency", transparency);
+  }
 };
 //! The 256 materials; without a file every one is OpenGL's default.
 struct table {
   std::array<Material, 256> at{};
+
+  template <class F>
+  void vv_fields(F&& f) {
+    f("at", at);
+  }
 };
 }  // namespace materials_detail
 

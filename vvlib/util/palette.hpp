@@ -34,6 +34,11 @@ typedef Colour<GLubyte> PaletteColour;
 struct colours {
   std::array<PaletteColour, 256> at;
   colours() { at.fill(PaletteColour(0, 0, 0, 255)); }
+
+  template <class F>
+  void vv_fields(F&& f) {
+    f("at", at);
+  }
 };
 }  // namespace palette_detail
 
