@@ -3,7 +3,8 @@
 // on the test's thread: the event log it keeps, replays that come back to
 // the same state (the same exported bytes), the state record told before
 // every job, an error that brings the model back to its last good state, a
-// replay that stops at the event that fails, and --script's order.
+// replay that stops at the event that fails, checkpoints resumed, and
+// --script's order.
 #include "controller_harness.hpp"
 
 namespace {
@@ -151,6 +152,41 @@ TEST(ModelController, ABuildThatCrashedOnItsWayInIsNotLoadedAgain) {
   m.reload();
   EXPECT_FALSE(m.c.facts().loaded);
   EXPECT_EQ(m.c.status(), "no model: it crashed while loading; edit it to try again");
+}
+
+// The viewer's checkpoint and resume commands (its panel gives them): the
+// model resumed goes on as the one saved would have, also with the
+// function its step 1 changed in memory, and its log starts at the
+// checkpoint, so a replay of the log comes back to the same state.
+TEST(ModelController, AResumedCheckpointGoesOnAsTheSavedModelWouldHave) {
+  controlled m("history.vvp");
+  m.run("step");
+  const std::string path = test_files::scratch_dir() + "history.ckpt";
+  m.run(command::with_path(command::checkpoint, path));
+  EXPECT_EQ(m.view.errors, std::vector<std::string>{});
+  m.run("step 2");
+  const std::string straight = m.exported("straight.vvm");
+  m.run(command::with_path(command::resume, path));
+  EXPECT_EQ(m.c.facts().steps, 1u);
+  EXPECT_EQ(m.view.said.back(), "resumed " + m.o.model + " from " + path);
+  m.run("step 2");
+  EXPECT_EQ(m.exported("resumed.vvm"), straight);
+  EXPECT_EQ(m.c.log().text(), "resume " + path + "\nstep 2\n");
+  controlled again("history.vvp", m.c.log());
+  EXPECT_EQ(again.c.facts().steps, 3u);
+  EXPECT_EQ(again.exported("replayed.vvm"), straight);
+  EXPECT_EQ(m.view.errors, std::vector<std::string>{});
+}
+
+TEST(ModelController, ACheckpointThatCannotBeResumedLeavesTheModelAsItWas) {
+  controlled m("history.vvp");
+  m.run("step 2");
+  const std::string path = test_files::write_scratch("not_a.ckpt", "step 3\n");
+  m.run(command::with_path(command::resume, path));
+  ASSERT_EQ(m.view.errors.size(), 1u);
+  EXPECT_EQ(m.view.errors[0], path + ": not a vv checkpoint (it does not begin with \"vv checkpoint\")");
+  EXPECT_EQ(m.c.facts().steps, 2u);
+  EXPECT_EQ(m.c.log().text(), "step 2\n");
 }
 
 // Batch's policy: the first error ends the run, and the commands queued
