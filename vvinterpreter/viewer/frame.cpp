@@ -55,6 +55,7 @@ panel_state panel_state_of(const viewer_parts& v) {
   s.counts = scene.inspected().counts();
   s.picked = scene.inspected().text();
   s.picked_label = scene.inspected().picked_label();
+  s.last_checkpoint = v.view.last_checkpoint_name();
   return s;
 }
 
@@ -65,6 +66,7 @@ void give(viewer_parts& v, std::vector<command> commands) {
   for (command& c : commands) {
     if (c.kind == command::screenshot && c.path.empty()) c.path = v.view.next_screenshot_name();
     if (c.kind == command::save_session && c.path.empty()) c.path = v.view.next_session_name();
+    if (c.kind == command::checkpoint && c.path.empty()) c.path = v.view.next_checkpoint_name();
     v.controller.submit(c);
   }
 }

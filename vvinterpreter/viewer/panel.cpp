@@ -5,6 +5,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
+#include <string>
 
 namespace vvi {
 
@@ -26,6 +28,25 @@ bool content_changed_size() {
   kept->SetFloat(x, extent.x);
   kept->SetFloat(y, extent.y);
   return changed;
+}
+
+// Save checkpoint (the next free vv_checkpoint_NNN.ckpt), and Resume from
+// the file named beside it: the last one saved, or any the user types.
+void draw_checkpoints(const panel_state& s, panel_actions& a) {
+  static char file[512] = "";
+  static std::string offered;
+  if (s.last_checkpoint != offered) {
+    offered = s.last_checkpoint;
+    std::snprintf(file, sizeof file, "%s", offered.c_str());
+  }
+  if (ImGui::Button("Save checkpoint")) a.add(command::of(command::checkpoint));
+  if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled))
+    ImGui::SetTooltip("save the model's whole state, to go on from it later");
+  ImGui::SameLine();
+  if (ImGui::Button("Resume") && file[0]) a.add(command::with_path(command::resume, file));
+  ImGui::SameLine();
+  ImGui::SetNextItemWidth(180);
+  ImGui::InputText("##checkpoint", file, sizeof file);
 }
 
 // The panel, once; `changed_size`: its content needs another size than
@@ -86,6 +107,7 @@ panel_actions draw_panel_once(const panel_state& s, bool& changed_size) {
   button("Save session", command::save_session);
   if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled))
     ImGui::SetTooltip("write what was done to the model, for --replay");
+  draw_checkpoints(s, a);
   if (disabled) ImGui::EndDisabled();
   bool replay = s.replay;
   if (ImGui::Checkbox("After a reload or restart, run again to the step", &replay))

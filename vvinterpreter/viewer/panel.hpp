@@ -49,6 +49,7 @@ struct panel_state {
   unsigned picked_label = 0;  // a new label opens the inspector again
   std::vector<std::string> file_objects;  // files the model reads, reread on save
   std::vector<action_view> actions;       // the program's, a button each
+  std::string last_checkpoint;            // the last one saved here: what Resume offers
 };
 
 struct panel_actions {

@@ -114,6 +114,14 @@ std::string window_view::next_session_name() {
   }
 }
 
+std::string window_view::next_checkpoint_name() {
+  for (int n = 1;; ++n) {
+    char name[40];
+    std::snprintf(name, sizeof name, "vv_checkpoint_%03d.ckpt", n);
+    if (!std::filesystem::exists(name)) return last_checkpoint_ = name;
+  }
+}
+
 view_record window_view::record(const int window[4]) const {
   view_record base;
   for (int i = 0; i < 4; ++i) base.window[i] = window[i];

@@ -49,6 +49,9 @@ class window_view : public controller_view, public messages {
   //! The next free vv_screenshot_NNN.png, and vv_session_NNN.vvs.
   std::string next_screenshot_name();
   std::string next_session_name();
+  //! The next free vv_checkpoint_NNN.ckpt; the last one given.
+  std::string next_checkpoint_name();
+  const std::string& last_checkpoint_name() const { return last_checkpoint_; }
   bool quit_asked() const { return quit_; }
   //! The window's part of the record (camera, display, screenshots).
   view_record record(const int window[4]) const;
@@ -66,6 +69,7 @@ class window_view : public controller_view, public messages {
   bool frame_wanted_ = false;  // proxy.record_frame, after a step
   std::string shot_path_, window_shot_path_;
   int screenshots_ = 0;
+  std::string last_checkpoint_;
   bool quit_ = false;
 };
 
