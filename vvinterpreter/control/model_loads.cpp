@@ -192,7 +192,8 @@ void model_controller::restore_after_error() {
   if (!policy_.restore_after_error || runner_.plugin_path().empty()) return;
   std::string plugin = runner_.plugin_path();
   if (record_.replay)
-    load_ = load_plan{plugin, log_, "restored " + o_.model + " to step " + std::to_string(log_.steps()) +
+    // The step the facts have counts a checkpoint's steps too (the log's do not).
+    load_ = load_plan{plugin, log_, "restored " + o_.model + " to step " + std::to_string(facts_.steps) +
                                         ", its last good state", false, true};
   else
     load_ = load_plan{plugin, event_log{log_.settings_after(), {}},
