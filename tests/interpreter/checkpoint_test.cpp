@@ -222,6 +222,31 @@ TEST(Checkpoint, ATruncatedOrDamagedCheckpointIsRefusedWithItsFileAndNothingIsWr
   }
 }
 
+// The viewer opens a checkpoint (--resume), saves one and resumes one with
+// its commands (what its panel's buttons give), as batch does.
+TEST(Checkpoint, TheViewerOpensSavesAndResumesCheckpointsAsBatchDoes) {
+  const std::string model = test_models + "random_walk.vvp";
+  const std::string dir = test_files::scratch_dir() + "viewer_";
+  test_run::result straight = batch({"--seed", "2", "--steps", "3", "--export", dir + "straight.vvm"}, model);
+  ASSERT_EQ(straight.status, 0) << report(straight);
+  test_run::result first = batch({"--seed", "2", "--steps", "1", "--checkpoint", dir + "1.ckpt"}, model);
+  ASSERT_EQ(first.status, 0) << report(first);
+  const std::string script = test_files::write_scratch(
+      "viewer.script", "step 2\nexport S " + dir + "opened.vvm\ncheckpoint " + dir + "3.ckpt\nresume " + dir +
+                           "1.ckpt\nstep 2\nexport S " + dir + "resumed.vvm\nquit\n");
+  test_run::result r = test_run::run(test_run::in_virtual_display(test_run::interpreter(
+                                         {"--seed", "2", "--resume", dir + "1.ckpt", "--script", script, model})),
+                                     120);
+  ASSERT_EQ(r.status, 0) << report(r);
+  const std::string expected = test_files::slurp(dir + "straight.vvm");
+  EXPECT_EQ(test_files::slurp(dir + "opened.vvm"), expected);
+  EXPECT_EQ(test_files::slurp(dir + "resumed.vvm"), expected);
+  EXPECT_NE(r.out.find("resumed " + model + " from " + dir + "1.ckpt\n"), std::string::npos) << r.out;
+  const std::string saved = test_files::slurp(dir + "3.ckpt");
+  EXPECT_EQ(saved.substr(0, saved.find("program-hash")), "vv checkpoint 1\nprogram random_walk.vvp\n");
+  EXPECT_NE(saved.find("\nstep 3\n"), std::string::npos);
+}
+
 TEST(Checkpoint, TheViewerSavesCheckpointsWithItsCommandNotWithTheOption) {
   test_run::result r = test_run::run(test_run::interpreter({"--checkpoint", "x.ckpt", test_models + "random_walk.vvp"}));
   EXPECT_EQ(r.status, 2);
