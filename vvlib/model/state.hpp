@@ -29,6 +29,7 @@
 #include "file_object.hpp"
 #include "program.hpp"
 #include "state_context.hpp"
+#include "state_parts.hpp"
 #include "state_stream.hpp"
 #include "state_values.hpp"
 
@@ -146,24 +147,12 @@ std::string props_problem() {
   return "";
 }
 
-inline void save_plot(state_writer& w, const vv::plot_series& s) {
-  w.text(s.name);
-  w.u64(s.steps.size());
-  for (std::size_t i = 0; i < s.steps.size(); ++i) w.u32(s.steps[i]), w.f64(s.values[i]);
-}
-
-inline vv::plot_series load_plot(state_reader& r) {
-  vv::plot_series s;
-  s.name = r.text("a plot's name");
-  for (std::uint64_t n = r.count("a plot's values", 12); n > 0; --n) {
-    s.steps.push_back(r.u32("a plot's step"));
-    s.values.push_back(r.f64("a plot's value"));
-  }
-  return s;
-}
-
-inline std::array<std::vector<file_object*>*, 4> proxy_lists(vv::proxy& p) {
-  return {&p.materials, &p.palettes, &p.functions, &p.contours};
+//! The globals that are file objects, by their index (null elsewhere).
+template <class Tr>
+std::vector<const file_object*> file_globals(const global_slot<Tr>* globals, std::size_t n) {
+  std::vector<const file_object*> files(n, nullptr);
+  for (std::size_t i = 0; i < n; ++i) files[i] = globals[i].as_file;
+  return files;
 }
 
 }  // namespace state_detail
@@ -195,24 +184,8 @@ std::string save_state(program<Tr>& p, global_slot<Tr>* globals, std::size_t N) 
     }
   });
   section(w, [&] {
-    const vv::proxy& h = p.host();
-    w.u32(h.steps), w.u32(h.delay_msec), w.u8(h.no_animate), w.u8(h.record_frame), w.u32(h.max_face);
-    w.u8(h.has_view_volume);
-    for (int i = 0; i < 3; ++i) w.f64(h.view_min[i]), w.f64(h.view_max[i]);
-    w.u32(h.plot_step);
-    w.u64(h.plots.size());
-    for (const vv::plot_series& s : h.plots) save_plot(w, s);
-    // The file objects the program put into the proxy's lists, by the
-    // index of their global (the globals are made anew when a model loads).
-    for (std::vector<file_object*>* list : proxy_lists(p.host())) {
-      w.u64(list->size());
-      for (const file_object* f : *list) {
-        std::size_t i = 0;
-        while (i < N && (globals[i].as_file != f || !f)) ++i;
-        if (i == N) throw state_error("the proxy lists a file object that is no global of the program");
-        w.u64(i);
-      }
-    }
+    const std::vector<const file_object*> files = file_globals(globals, N);
+    save_proxy(w, p.host(), files.data(), N);
   });
   exchange& x = p.host_exchange();
   section(w, [&] {
@@ -263,23 +236,8 @@ void restore_state(program<Tr>& p, global_slot<Tr>* globals, std::size_t N, cons
     if (next != N) throw state_error(std::string("the state lacks the global ") + globals[next].entry.name);
   });
   read_section(r, "proxy", [&](state_reader& in) {
-    vv::proxy& h = p.host();
-    h.steps = in.u32("proxy.steps"), h.delay_msec = in.u32("proxy.delay_msec");
-    h.no_animate = in.u8("proxy.no_animate") != 0, h.record_frame = in.u8("proxy.record_frame") != 0;
-    h.max_face = in.u32("proxy.max_face");
-    h.has_view_volume = in.u8("the view volume") != 0;
-    for (int i = 0; i < 3; ++i) h.view_min[i] = in.f64("the view volume"), h.view_max[i] = in.f64("the view volume");
-    h.plot_step = in.u32("the plot step");
-    h.plots.clear();
-    for (std::uint64_t n = in.count("the plots", 16); n > 0; --n) h.plots.push_back(load_plot(in));
-    for (std::vector<file_object*>* list : proxy_lists(h)) {
-      list->clear();
-      for (std::uint64_t n = in.count("the proxy's file objects", 8); n > 0; --n) {
-        std::uint64_t i = in.u64("a file object");
-        if (i >= N || !globals[i].as_file) throw state_error("a file object that is no global of the program");
-        list->push_back(const_cast<file_object*>(globals[i].as_file));
-      }
-    }
+    const std::vector<const file_object*> files = file_globals(globals, N);
+    restore_proxy(in, p.host(), files.data(), N);
   });
   read_section(r, "exchange", [&](state_reader& in) {
     exchange& x = p.host_exchange();

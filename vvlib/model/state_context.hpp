@@ -15,12 +15,12 @@
 
 #include <cstdint>
 #include <memory>
-#include <sstream>
 #include <string>
 #include <vector>
 
 #include <vv/context.hpp>
 
+#include "state_parts.hpp"
 #include "state_stream.hpp"
 #include "state_values.hpp"
 
@@ -44,12 +44,8 @@ struct context_state {
     w.u64(c.gc_threshold_);
     w.u64(c.free_slots_.size());
     for (std::uint32_t id : c.free_slots_) w.u32(id);
-    std::ostringstream rng;
-    rng.imbue(std::locale::classic());
-    rng << c.rng_;
-    w.text(rng.str());
-    w.u64(c.warned_.size());
-    for (const std::string& key : c.warned_) w.text(key);
+    save_engine(w, c.rng_);
+    save_texts(w, c.warned_);
     w.u64(c.chunks_.size());
     for (const auto& chunk : c.chunks_) w.u8(chunk->old ? 1 : 0);
     // The slots first, then what each holds: a restore knows every live
@@ -105,12 +101,8 @@ struct context_state {
     c.gc_threshold_ = static_cast<std::size_t>(r.u64("the collector's threshold"));
     std::vector<std::uint32_t> free_slots(static_cast<std::size_t>(r.count("the free slots", 4)));
     for (std::uint32_t& id : free_slots) id = slot_below(r.u32("a free slot"), next_slot);
-    std::istringstream rng(r.text("the random generator"));
-    rng.imbue(std::locale::classic());
-    rng >> c.rng_;
-    if (rng.fail()) throw state_error("the random generator's state does not read back");
-    c.warned_.clear();
-    for (std::uint64_t n = r.count("the warnings said", 8); n > 0; --n) c.warned_.insert(r.text("a warning"));
+    restore_engine(r, c.rng_);
+    restore_texts(r, c.warned_);
     const std::uint64_t chunks = r.count("the chunks");
     if (chunks != ((next_slot - 1) >> C::chunk_bits) + 1) throw state_error("a chunk count that does not fit the slots");
     while (c.chunks_.size() < chunks) c.add_chunk();
@@ -129,6 +121,8 @@ struct context_state {
       if (label == 0 || label >= next_label) throw state_error("a vertex label that cannot be");
       c.labels_[id] = label;
     }
+    for (std::uint32_t id : c.free_slots_)
+      if (c.labels_[id]) throw state_error("a slot both free and holding a vertex");
     for (std::uint32_t id : live) {
       if (!c.labels_[id]) continue;
       load_nb(a, c.nb(id));
