@@ -59,6 +59,8 @@ model_controller::model_controller(const options& o, model_jobs& jobs, controlle
     resume_pending_ = true;
     keep_error_once_ = true;  // the reason for the restart stays shown
     log_ = from.log;
+  } else {
+    log_.initial = runner_.parameter_settings();  // --set: the values the first load starts with
   }
   // What this process tells its supervisor starts afresh.
   record_.restarted = false;
