@@ -148,7 +148,6 @@ TEST(ViewerFaults, ExitInAStepLeavesTheViewerRunningAtStepOne) {
   EXPECT_EQ(r.status, 0) << report(r);
   EXPECT_TRUE(has(r.err, "vvinterpreter: " + model + ":23: the model called exit(3) in step 2, before the run was done\n"))
       << report(r);
-  EXPECT_TRUE(has(r.err, "the model was run again to step 1, its last good state")) << report(r);
   EXPECT_TRUE(has(r.out, "wrote " + d + "S.vvm")) << report(r);
   EXPECT_EQ(vvm_vertex_count(d + "S.vvm"), 3);
   EXPECT_EQ(count_of(r.out, "step 1\n"), 2) << "step 1 before the exit and again after it\n" << report(r);
