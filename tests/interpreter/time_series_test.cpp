@@ -190,6 +190,49 @@ TEST(TimeSeries, EachRunOfASweepWritesItsSeriesInItsFolder) {
   }
 }
 
+// ---- the viewer ----
+
+TEST(TimeSeries, ViewerRecordsTheSameSeriesWhileItSteps) {
+  const std::string dir = fresh_dir("series_viewer");
+  viewer_harness::write_text(dir + "s.txt", viewer_harness::script({
+                                                "record 5 " + dir + "ring-{step}.vtp",
+                                                "record 5 " + dir + "f-{step}.png 2",
+                                                "record 5 " + dir + "ring.mp4",
+                                                "step 12",
+                                                "record off",
+                                                "plots " + dir + "plots.csv",
+                                                "record 5 " + dir + "bad.vtp",
+                                                "quit",
+                                            }));
+  test_run::result r = test_run::run(
+      test_run::in_virtual_display(test_run::interpreter({"--script", dir + "s.txt", ring_vvp})),
+      viewer_harness::viewer_timeout);
+  ASSERT_FALSE(r.timed_out);
+  ASSERT_EQ(r.status, 0) << r.err;
+  // Now, at 5 and 10, and at 12 where the recording stopped; {step} five
+  // digits wide (the viewer cannot know the last step), or as the command says.
+  EXPECT_EQ(names_in(dir), (std::set<std::string>{"s.txt", "plots.csv", "ring-00000.vtp", "ring-00005.vtp",
+                                                   "ring-00010.vtp", "ring-00012.vtp", "ring.pvd", "f-00.png",
+                                                   "f-05.png", "f-10.png", "f-12.png", "ring.mp4"}));
+  std::vector<std::string> expected;
+  for (unsigned step : {0u, 5u, 10u, 12u}) {
+    char name[24];
+    std::snprintf(name, sizeof name, "ring-%05u.vtp", step);
+    expected.push_back(std::to_string(step) + " " + name + " " + cells_at(dir + "plots.csv", step));
+  }
+  EXPECT_EQ(read_with_vtk(dir + "ring.pvd").datasets, expected);
+  // The view does not follow the ring while it records: its picture grows.
+  EXPECT_LT(object_box(load_png(dir + "f-00.png")).width() + 40, object_box(load_png(dir + "f-12.png")).width());
+  // The movie's frames are the scene's pictures (the window without the panel).
+  EXPECT_EQ(probe(dir + "ring.mp4"), "h264," + std::to_string(viewer_harness::window_width) + "," +
+                                         std::to_string(viewer_harness::window_height) + ",4");
+  EXPECT_NE(r.err.find("vvinterpreter: record " + dir +
+                       "bad.vtp: the name has no {step}, so each file would replace the one before; write it as " +
+                       dir + "bad-{step}.vtp"),
+            std::string::npos)
+      << r.err;
+}
+
 // ---- refusals ----
 
 struct refusal {

@@ -107,6 +107,7 @@ panel_actions draw_panel_once(const panel_state& s, bool& changed_size) {
   draw_parameters(s, a);
   draw_plots(s);
   draw_display(s, a);
+  draw_record(s, a);
   ImGui::Separator();
   ImGui::TextDisabled("drag: rotate   right-drag: pan   wheel: zoom");
   ImGui::TextDisabled("space: step  a: animate  w: rewind  f: fit  s: screenshot");
