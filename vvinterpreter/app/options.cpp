@@ -133,8 +133,8 @@ void batch_options(CLI::App& app, options& o) {
   text(app, "--screenshot", "FILE", "batch",
        "render a PNG after the steps (offscreen), or with --every a movie FILE.mp4 (ffmpeg)", o.screenshot);
   with_value(app, "--every", "K", "batch",
-             "write --export and --screenshot after start and after every K-th step, and at the last, each file "
-             "named with {step}; a .vtp series is listed in a ParaView .pvd beside it",
+             "write --export and --screenshot after start, after every step that is a multiple of K and at the "
+             "last, {step} in their names the step's number; a .vtp series is listed in a ParaView .pvd beside it",
              [&o](const std::string& v) { o.every = number(v, 1, 100000000, "--every needs a number of steps (1 or more)"); });
   app.add_option_function<std::vector<std::string>>("--frame", [&o](const std::vector<std::string>& v) {
        const char* need = "--frame needs six numbers: XMIN YMIN ZMIN XMAX YMAX ZMAX";

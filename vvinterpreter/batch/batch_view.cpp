@@ -36,6 +36,7 @@ void progress::update(unsigned done) {
 }
 
 void batch_view::model_changed(const model_change& c) {
+  if (c.kind == model_change::loaded) rendering_of_ = nullptr;  // a fresh instance: its render_init
   if (c.kind == model_change::stepped) bar_.update(controller_->facts().steps - first_step_);
 }
 
@@ -48,7 +49,7 @@ bool batch_view::view(const command& c) {
     if (e.empty()) std::printf("%s", text.c_str());
   } else if (c.kind == command::screenshot) {
     std::vector<std::uint8_t> pixels;
-    e = batch_picture(o_, c.path, runner, frame_ ? &*frame_ : nullptr, pixels);
+    e = picture(c.path, pixels);
     if (e.empty())
       e = write_output(c.path, [&](const std::string& to) { return write_png(to, o_.width, o_.height, pixels); });
     if (e.empty()) wrote(c.path);
@@ -78,7 +79,7 @@ std::string batch_view::record_picture(const std::string& file, unsigned long st
     return "";
   }
   std::vector<std::uint8_t> pixels;
-  if (std::string e = batch_picture(o_, file, runner, frame_ ? &*frame_ : nullptr, pixels); !e.empty()) return e;
+  if (std::string e = picture(file, pixels); !e.empty()) return e;
   if (series_file_of(file) != series_file::movie) {
     std::string e = write_output(file, [&](const std::string& to) { return write_png(to, o_.width, o_.height, pixels); });
     if (e.empty()) wrote(file);
@@ -113,14 +114,21 @@ std::string no_such_property(const options& o, const vv_geometry& g) {
 
 }  // namespace
 
-std::string batch_picture(const options& o, const std::string& path, const model_runner& runner, const box* frame,
-                          std::vector<std::uint8_t>& pixels) {
+// The context is made at the first picture and kept for the others (a
+// series draws many); a model instance's render_init runs once in it.
+std::string batch_view::picture(const std::string& path, std::vector<std::uint8_t>& pixels) {
+  const options& o = o_;
+  const model_runner& runner = controller_->runner();
+  const box* frame = frame_ ? &*frame_ : nullptr;
   std::string error;
-  std::unique_ptr<offscreen> gl = offscreen::create(o.width, o.height, error);
-  if (!gl) return error;
+  if (!gl_) gl_ = offscreen::create(o.width, o.height, error);
+  if (!gl_) return error;
   session* model = runner.model();
   if (model) model->announce_drawing(true);  // its render blocks are supervised like the others
-  if (!init_rendering(model, error)) return error;
+  if (rendering_of_ != model || !model) {
+    if (!init_rendering(model, error)) return error;
+    rendering_of_ = model;
+  }
   mesh_drawing drawing;  // drawn unless the model draws itself; its bounds fit the view
   vv_geometry g{};
   error = runner.geometry(g, o.color_by);

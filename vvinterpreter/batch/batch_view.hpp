@@ -13,12 +13,14 @@
 #include "app/options.hpp"
 #include "control/controller_view.hpp"
 #include "render/camera.hpp"
+#include "render/offscreen.hpp"
 #include "series/movie.hpp"
 
 namespace vvi {
 
 class model_controller;
 class model_runner;
+class session;
 
 // "step 12/100, 3.4 s" on one line, only when a person watches standard error.
 class progress {
@@ -67,11 +69,13 @@ class batch_view : public controller_view {
   box measured_;
   std::optional<box> frame_;  // --frame, or the series' measured box
   std::map<std::string, std::unique_ptr<movie_writer>> movies_;
+  std::unique_ptr<offscreen> gl_;
+  const session* rendering_of_ = nullptr;  // the instance whose render_init ran in gl_
+
+  //! The picture: offscreen, the whole model in view, or the frame when
+  //! there is one; RGBA, top row first. "" or the error, about `path`.
+  std::string picture(const std::string& path, std::vector<std::uint8_t>& pixels);
 };
 
-//! The batch picture: offscreen, the whole model in view, or `frame` when
-//! given; RGBA, top row first. "" or the error, about `path`.
-std::string batch_picture(const options& o, const std::string& path, const model_runner& runner, const box* frame,
-                          std::vector<std::uint8_t>& pixels);
 
 }  // namespace vvi
