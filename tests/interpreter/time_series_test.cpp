@@ -159,6 +159,15 @@ TEST(TimeSeries, MovieOfARunThatCrashesIsNotWritten) {
   EXPECT_TRUE(fs::is_empty(dir)) << "left: " << *names_in(dir).begin();
 }
 
+TEST(TimeSeries, MovieIntoAMissingFolderFailsNamingItAndLeavesNothing) {
+  const std::string dir = fresh_dir("series_movie_missing_folder");
+  test_run::result r =
+      vvi({"--batch", "--steps", "2", "--every", "1", "--screenshot", dir + "no/m.mp4", "--size", "64x48", ring_vvp});
+  EXPECT_EQ(r.status, 1);
+  EXPECT_EQ(r.err, "vvinterpreter: " + dir + "no/m.mp4: cannot write file: No such file or directory\n");
+  EXPECT_TRUE(fs::is_empty(dir));
+}
+
 TEST(TimeSeries, MovieWithoutFfmpegIsRefusedBeforeTheRun) {
   const std::string dir = fresh_dir("series_no_ffmpeg");
   test_run::result r = test_run::run({"env", "PATH=" + dir, VV_INTERPRETER, "--cache", VV_TEST_CACHE, "--batch",
