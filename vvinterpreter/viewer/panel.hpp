@@ -3,7 +3,7 @@
 //
 // Its layout: the model's state and buttons, then the picked vertex (when
 // there is one: near the top, so a pick is always in view), then the
-// sections Actions, Parameters, Plots, Display and Record, each folding away. The panel is
+// sections Actions, Parameters, Plots and Display, each folding away. The panel is
 // never taller than the window; what does not fit scrolls.
 #pragma once
 
@@ -67,6 +67,8 @@ void draw_inspector(const panel_state& s, panel_actions& a);
 void draw_parameters(const panel_state& s, panel_actions& a);
 void draw_plots(const panel_state& s);
 void draw_display(const panel_state& s, panel_actions& a);
+//! The Record button beside the model's buttons, with its settings in a
+//! popup; Stop recording while it records.
 void draw_record(const panel_state& s, panel_actions& a);
 
 //! Draws the panel; the first window of the frame (when its content
