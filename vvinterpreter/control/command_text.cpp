@@ -62,9 +62,8 @@ const command_spec specs[] = {
     {"save-session", command::save_session, args::path, "save-session FILE",
      "write the model's events, for --replay FILE"},
     {"record", command::record, args::record, "record K FILE [DIGITS]",
-     "write FILE now and after every step that is a multiple of K: a mesh (.vtp .vvm .obj ...), a picture (.png) or a "
-     "movie's frame (.mp4); {step} in FILE is the step, DIGITS wide (default 5); record off: the last state, "
-     "and the end"},
+     "write FILE (a mesh, .png, .mp4) now and at each step that is a multiple of K, {step} in it the step "
+     "(DIGITS wide, default 5); record off: the last state, and stop"},
     {"screenshot", command::screenshot, args::path, "screenshot FILE.png", "save the view without the panel"},
     {"window-screenshot", command::window_screenshot, args::path, "window-screenshot F",
      "save the whole window, panel included"},
