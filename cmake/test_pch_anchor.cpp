@@ -1,2 +1,3 @@
-// The one source of vv_test_pch, the target that builds the test programs'
-// shared precompiled header (cmake/VVTestPrecompiledHeader.cmake).
+// The one source of the targets that only build a precompiled header for
+// test programs to share: vv_test_pch (cmake/VVTestPrecompiledHeader.cmake)
+// and vvp_pch (tests/vvc/CMakeLists.txt).

@@ -6,6 +6,8 @@
 #include "batch/batch.hpp"
 #include "app/options.hpp"
 #include "experiment/sweep.hpp"
+#include "series/movie.hpp"
+#include "series/step_names.hpp"
 #include "viewer/viewer.hpp"
 
 int main(int argc, char** argv) {
@@ -25,6 +27,12 @@ int main(int argc, char** argv) {
     return 0;
   }
   if (p.opts.sweep.merging()) return vvi::run_merge(p.opts);
+  // A movie needs ffmpeg: said before anything runs (a sweep: before its runs).
+  if (p.opts.batch && vvi::series_file_of(p.opts.screenshot) == vvi::series_file::movie)
+    if (std::string why = vvi::movie_maker_missing(p.opts.screenshot); !why.empty()) {
+      std::fprintf(stderr, "vvinterpreter: %s\n", why.c_str());
+      return 1;
+    }
   if (p.opts.sweep.sweeping()) return vvi::run_sweep(p.opts, argc, argv);
   if (p.opts.compile_only) return vvi::run_compile_only(p.opts);
   if (p.opts.batch) return vvi::run_batch(p.opts);

@@ -53,6 +53,9 @@ std::vector<command> one_of_each() {
   add(command::with_path(command::plots, "p.csv"));
   add(command::of(command::save_params));
   add(command::with_path(command::save_session, "a \"quoted\" \\ name.vvs"));
+  add(command::recording(5, "out dir/mesh-{step}.vtp", 3));
+  add(command::recording(2, "m.mp4"));
+  add(command::record_off());
   add(command::with_path(command::screenshot, "a.png"));
   add(command::with_path(command::window_screenshot, "w.png"));
   add(command::of(command::fit));
@@ -112,6 +115,9 @@ TEST(CommandLanguage, ABadLineNamesItsFileLineAndWhatIsWrong) {
   EXPECT_EQ(parse_error("step 0\n"), "s.txt:1: bad arguments for 'step' (it takes: step [N])");
   EXPECT_EQ(parse_error("show edges maybe\n"), "s.txt:1: bad arguments for 'show' (it takes: show WHAT on|off)");
   EXPECT_EQ(parse_error("action \"Divide\n"), "s.txt:1: a quoted word is not closed");
+  EXPECT_EQ(parse_error("record 0 m-{step}.vtp\n"),
+            "s.txt:1: bad arguments for 'record' (it takes: record K FILE [DIGITS])");
+  EXPECT_EQ(parse_error("record on\n"), "s.txt:1: bad arguments for 'record' (it takes: record K FILE [DIGITS])");
   EXPECT_EQ(parse_error("action Divide all\n"),
             "s.txt:1: bad arguments for 'action' (it takes: action NAME); a name with spaces is quoted: "
             "action \"Divide all\"");

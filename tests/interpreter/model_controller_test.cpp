@@ -89,6 +89,33 @@ TEST(ModelController, ReplayingTheLogGivesTheSameExport) {
   EXPECT_TRUE(again.c.log() == first.c.log());
 }
 
+// Regression: the viewer's first load started from an empty log, so the
+// values given with --set never reached the model.
+TEST(ModelController, TheFirstLoadStartsWithTheCommandLinesValues) {
+  vvi::options o = options_for("history.vvp");
+  o.parameter_values = {{"spacing", "3"}};
+  recording_view view;
+  recording_jobs jobs{view};
+  vvi::model_controller c(o, jobs, view, {}, {});
+  c.submit(command::of(command::reload));  // the viewer's first build
+  for (int i = 0; i < 6000 && (c.building() || !c.idle()); ++i) {
+    c.poll(0);
+    std::this_thread::sleep_for(std::chrono::milliseconds(10));
+  }
+  c.submit(command::of(command::step));
+  c.poll(0);
+  EXPECT_EQ(c.log().text(), "set spacing=3\nrewind\nstep 1\n");
+  std::string path = test_files::scratch_dir() + "first_load_set.vvm";
+  command e = command::with_path(command::export_mesh, path);
+  e.name = "S";
+  c.submit(e);
+  c.poll(0);
+  controlled given("history.vvp", log_of("set spacing=3\nrewind\nstep 1\n"));
+  controlled plain("history.vvp", log_of("step 1\n"));
+  EXPECT_EQ(test_files::slurp(path), given.exported("first_load_given.vvm"));
+  EXPECT_NE(test_files::slurp(path), plain.exported("first_load_plain.vvm"));
+}
+
 TEST(ModelController, AReloadReplaysTheLog) {
   controlled m("history.vvp");
   for (const char* line : {"step", "set spacing=3", "reread", "step", "end"}) m.run(line);

@@ -136,4 +136,21 @@ TEST(ViewerFaults, StopEndsAnEndlessStepAndTheModelComesBackAtItsLastGoodStep) {
   EXPECT_EQ(vvm_vertex_count(d + "S.vvm"), 3);
 }
 
+// Regression: a model that called exit() inside a step ended the viewer,
+// silently. It is a fault like a crash: the window stays, the message
+// names the call's line and the step, and the model comes back at step 1.
+TEST(ViewerFaults, ExitInAStepLeavesTheViewerRunningAtStepOne) {
+  std::string d = fresh_dir("viewer_exit");
+  std::string model = VV_TESTS_DIR "/supervision_models/misbehaves.vvp";
+  write_text(d + "s.txt", script({"step 1", "step 1", "export S " + d + "S.vvm", "quit"}));
+  test_run::result r = viewer({"--set", "fault=3", "--set", "in_step=2", "--script", d + "s.txt", model});
+  ASSERT_FALSE(r.timed_out) << report(r);
+  EXPECT_EQ(r.status, 0) << report(r);
+  EXPECT_TRUE(has(r.err, "vvinterpreter: " + model + ":23: the model called exit(3) in step 2, before the run was done\n"))
+      << report(r);
+  EXPECT_TRUE(has(r.out, "wrote " + d + "S.vvm")) << report(r);
+  EXPECT_EQ(vvm_vertex_count(d + "S.vvm"), 3);
+  EXPECT_EQ(count_of(r.out, "step 1\n"), 2) << "step 1 before the exit and again after it\n" << report(r);
+}
+
 }  // namespace

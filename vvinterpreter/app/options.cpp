@@ -2,6 +2,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include <cmath>
 #include <cstdlib>
 #include <functional>
 #include <string>
@@ -9,6 +10,7 @@
 #include "compile/build_config.hpp"
 #include "control/command_text.hpp"
 #include "experiment/sweep_options.hpp"
+#include "series/step_names.hpp"
 
 namespace vvi {
 
@@ -130,8 +132,33 @@ void batch_options(CLI::App& app, options& o) {
   text(app, "--resume", "FILE", "batch",
        "go on from a checkpoint instead of running start: --steps N then runs N more steps (also the viewer)",
        o.resume);
-  text(app, "--export", "FILE", "batch", "write a mesh after the steps: .vvm .obj .off .ply .stl .vtp", o.export_path);
-  text(app, "--screenshot", "FILE", "batch", "render a PNG after the steps (offscreen)", o.screenshot);
+  text(app, "--export", "FILE", "batch",
+       "write a mesh after the steps: .vvm .obj .off .ply .stl .vtp ({step} in FILE: the step's number)",
+       o.export_path);
+  text(app, "--screenshot", "FILE", "batch",
+       "render a PNG after the steps (offscreen), or with --every a movie FILE.mp4 (ffmpeg)", o.screenshot);
+  with_value(app, "--every", "K", "batch",
+             "write --export and --screenshot after start, after every step that is a multiple of K and at the "
+             "last, {step} in their names the step's number; a .vtp series is listed in a ParaView .pvd beside it",
+             [&o](const std::string& v) { o.every = number(v, 1, 100000000, "--every needs a number of steps (1 or more)"); });
+  app.add_option_function<std::vector<std::string>>("--frame", [&o](const std::vector<std::string>& v) {
+       const char* need = "--frame needs six numbers: XMIN YMIN ZMIN XMAX YMAX ZMAX";
+       if (v.size() != 6) throw usage_error{need};
+       o.frame.clear();
+       for (const std::string& n : v) {
+         char* end = nullptr;
+         double x = std::strtod(n.c_str(), &end);
+         if (n.empty() || *end || !std::isfinite(x)) throw usage_error{need};
+         o.frame.push_back(x);
+       }
+       for (int axis = 0; axis < 3; ++axis)
+         if (o.frame[axis + 3] < o.frame[axis])
+           throw usage_error{std::string("--frame: ") + "XYZ"[axis] + "MAX is below " + "XYZ"[axis] + "MIN"};
+     }, "fit the screenshots to this box rather than to the model (default in a series: the box that holds "
+        "every frame's model, found by a first run)")
+      ->expected(0, 6)->allow_extra_args(false)->trigger_on_parse()->option_text("X0 Y0 Z0 X1 Y1 Z1")->group("batch");
+  with_value(app, "--fps", "N", "batch", "frames a second of a --screenshot movie (default 10)",
+             [&o](const std::string& v) { o.fps = static_cast<unsigned>(number(v, 1, 240, "--fps needs a number of frames a second (1 to 240)")); });
   with_value(app, "--size", "WxH", "batch", "the screenshot's size (default 800x600)", [&o](const std::string& v) {
     const char* need = "--size needs WIDTHxHEIGHT, e.g. 800x600 (at most 16384 each way)";
     if (v.empty()) throw usage_error{"--size needs WIDTHxHEIGHT"};
@@ -243,6 +270,31 @@ void register_options(CLI::App& app, options& o, std::vector<std::string>& model
   app.allow_extras();  // unknown options are named by check_whole
 }
 
+// What --every, {step} and a movie need of each other: "" or why not.
+std::string series_problem(const options& o) {
+  const std::string every = "--every " + std::to_string(o.every);
+  bool movie = series_file_of(o.screenshot) == series_file::movie;
+  if (movie && has_step_mark(o.screenshot))
+    return "--screenshot " + o.screenshot + ": a movie is one file; leave {step} out of its name";
+  if (movie && !o.every)
+    return "--screenshot " + o.screenshot + ": a movie needs --every K (a frame after start and every K steps)";
+  if (!o.every) return "";
+  if (!o.batch)
+    return every + " is for --batch; the viewer records series with its Record section or the script command "
+                   "record";
+  if (o.export_path.empty() && o.screenshot.empty())
+    return every + " writes the files of --export and --screenshot every " + std::to_string(o.every) +
+           " steps; give one of them, with {step} in its name (e.g. --export mesh-{step}.vtp)";
+  const std::pair<const char*, const std::string*> files[] = {{"--export", &o.export_path},
+                                                              {"--screenshot", &o.screenshot}};
+  for (const auto& [option, name] : files)
+    if (!name->empty() && !has_step_mark(*name) && !(name == &o.screenshot && movie))
+      return every + ": " + option + " " + *name +
+             " has no {step} in its name, so each file would replace the one before; write it as " +
+             with_step_mark(*name);
+  return "";
+}
+
 // What the options say together.
 void check_whole(const CLI::App& app, const std::vector<std::string>& models, options& o) {
   for (const std::string& a : app.remaining())
@@ -262,6 +314,7 @@ void check_whole(const CLI::App& app, const std::vector<std::string>& models, op
                       "checkpoint FILE)"};
   if (!o.batch && (!o.replay.empty() || !o.events_at.empty()))
     throw usage_error{"--replay, --action and --pick-action are for --batch (the viewer runs a session with --script)"};
+  if (std::string why = series_problem(o); !why.empty()) throw usage_error{why};
 }
 
 // One option's line(s) of the help: its names and value, then what it does,

@@ -28,6 +28,9 @@ struct options {
   std::string screenshot;
   int width = 800, height = 600;
   double view_yaw = 0, view_pitch = 0;
+  unsigned long every = 0;   // --every K: a time series (0: none)
+  std::vector<double> frame;  // --frame XMIN YMIN ZMIN XMAX YMAX ZMAX, or none
+  unsigned fps = 10;          // of a --screenshot movie
   std::uint64_t seed = 0;
   bool strict = false;
   unsigned threads = 0;  // 0: the machine's cores

@@ -1,9 +1,12 @@
 #include "batch/batch.hpp"
 
+#include <fcntl.h>
+#include <string.h>
+#include <unistd.h>
+
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
-#include <string.h>
 
 #include "app/files.hpp"
 #include "batch/batch_view.hpp"
@@ -11,6 +14,7 @@
 #include "control/model_controller.hpp"
 #include "runner/crash_report.hpp"
 #include "runner/supervisor.hpp"
+#include "series/step_names.hpp"
 
 namespace vvi {
 
@@ -105,6 +109,81 @@ std::string run_steps(const options& o, model_controller& c, batch_run& run, dou
   return steps_to(last);
 }
 
+// --every: a `record` command for each file option, {step} as wide as
+// the last step; only the pictures when `pictures_only`.
+std::vector<command> series_commands(const options& o, unsigned long last_step, bool pictures_only) {
+  std::vector<command> out;
+  for (const std::string* file : {&o.export_path, &o.screenshot}) {
+    if (file->empty() || (pictures_only && file == &o.export_path)) continue;
+    out.push_back(command::recording(o.every, *file, digits_of(last_step)));
+  }
+  return out;
+}
+
+// One run of the model from its start (or its checkpoint): the session's
+// events, the steps (with the series of --every), --checkpoint, the end
+// block; "" or the error. A run that only measures (`pictures_only`) saves
+// no checkpoint.
+std::string run_model(const options& o, model_controller& c, batch_view& view, const build_result& b,
+                      const event_log& log, bool pictures_only, double& seconds) {
+  c.load_build(b, log);
+  c.poll(0);
+  if (c.failed()) return c.failure();
+  view.count_steps_from(c.facts().steps);
+  batch_run run(c, view);
+  if (o.every)
+    for (const command& record : series_commands(o, c.facts().steps + o.steps, pictures_only))
+      if (std::string e = run(record); !e.empty()) return e;
+  if (std::string e = run_steps(o, c, run, seconds); !e.empty()) return e;
+  if (!o.checkpoint.empty() && !pictures_only)
+    if (std::string e = run(command::with_path(command::checkpoint, o.checkpoint)); !e.empty()) return e;
+  if (o.end_block)
+    if (std::string e = run(command::of(command::end)); !e.empty()) return e;
+  if (o.every)
+    if (std::string e = run(command::record_off()); !e.empty()) return e;
+  return "";
+}
+
+// Standard output goes nowhere while it lives (the model's printing in a
+// run that only measures).
+class silenced_stdout {
+ public:
+  silenced_stdout() {
+    std::fflush(stdout);
+    saved_ = ::dup(STDOUT_FILENO);
+    int null = ::open("/dev/null", O_WRONLY | O_CLOEXEC);
+    if (null >= 0) ::dup2(null, STDOUT_FILENO), ::close(null);
+  }
+  ~silenced_stdout() {
+    std::fflush(stdout);
+    if (saved_ >= 0) ::dup2(saved_, STDOUT_FILENO), ::close(saved_);
+  }
+  silenced_stdout(const silenced_stdout&) = delete;
+  silenced_stdout& operator=(const silenced_stdout&) = delete;
+
+ private:
+  int saved_ = -1;
+};
+
+// A series of screenshots keeps one framing: the box that holds the model
+// of every frame. It is known only at the end, so a first run, which
+// writes nothing, finds it (models are deterministic: the second run goes
+// through the same states). --frame gives it instead.
+std::string measure_frame(const options& o, model_controller& c, batch_view& view, const build_result& b,
+                          const event_log& log) {
+  if (!o.quiet) std::printf("a first run finds the box that holds every frame (--frame gives it instead)\n");
+  std::string e;
+  {
+    silenced_stdout quiet;
+    view.measure_frame();
+    double seconds = 0;
+    e = run_model(o, c, view, b, log, true, seconds);
+    if (e.empty()) e = c.close_model();
+  }
+  if (e.empty()) view.use_frame(view.measured());
+  return e;
+}
+
 // The batch run itself, in the supervised child process.
 int run_model_headless(const options& o) {
   inline_jobs jobs;
@@ -118,26 +197,24 @@ int run_model_headless(const options& o) {
   event_log log;
   std::string error;
   if (!read_session(o, log, error)) return fail(error);
-  c.load_build(b, log);
-  c.poll(0);
-  if (c.failed()) return fail(c.failure());
-  view.count_steps_from(c.facts().steps);
-  batch_run run(c, view);
+  if (o.every && !o.screenshot.empty() && o.frame.empty())
+    if (std::string e = measure_frame(o, c, view, b, log); !e.empty()) return fail(e);
   double seconds = 0;
-  if (std::string e = run_steps(o, c, run, seconds); !e.empty()) return fail(e);
-  if (!o.checkpoint.empty())
-    if (std::string e = run(command::with_path(command::checkpoint, o.checkpoint)); !e.empty()) return fail(e);
-  if (o.end_block)
-    if (std::string e = run(command::of(command::end)); !e.empty()) return fail(e);
+  if (std::string e = run_model(o, c, view, b, log, false, seconds); !e.empty()) return fail(e);
   if (!o.quiet) {
     std::printf("%u steps in %.3f s\n", o.steps, seconds);
     for (const auto& [name, vertices] : c.facts().meshes) std::printf("mesh %s: %zu vertices\n", name.c_str(), vertices);
   }
+  // Without --every, {step} in a name is the last step's number.
+  unsigned long last = c.facts().steps;
   std::vector<command> outputs;
-  if (!o.export_path.empty()) outputs.push_back(command::with_path(command::export_mesh, o.export_path));
+  if (!o.export_path.empty() && !o.every)
+    outputs.push_back(command::with_path(command::export_mesh, name_at_step(o.export_path, last, 0)));
   for (unsigned label : o.picks) outputs.push_back(command::labelled(command::inspect, label));
   if (!o.plots_path.empty()) outputs.push_back(command::with_path(command::plots, o.plots_path));
-  if (!o.screenshot.empty()) outputs.push_back(command::with_path(command::screenshot, o.screenshot));
+  if (!o.screenshot.empty() && !o.every)
+    outputs.push_back(command::with_path(command::screenshot, name_at_step(o.screenshot, last, 0)));
+  batch_run run(c, view);
   for (const command& out : outputs)
     if (std::string e = run(out); !e.empty()) return fail(e);
   if (std::string e = c.close_model(); !e.empty()) return fail(e);

@@ -14,7 +14,7 @@ struct command {
     // pick_action are its events: the event log keeps them.
     step, run, animate, stop, rewind, resume, end, reread, reload, recompile, set, action, pick_action,
     // Looking into it and writing it out.
-    inspect, export_mesh, plots, save_params, save_session, checkpoint,
+    inspect, export_mesh, plots, save_params, save_session, checkpoint, record,
     // The view.
     screenshot, window_screenshot, fit, rotate, zoom, reset_view, show, color_by,
     // How the viewer goes on.
@@ -22,13 +22,14 @@ struct command {
   };
 
   kind_t kind = step;
-  unsigned long number = 1;  //!< step N, wait MS, inspect and pick-action LABEL (inspect 0: none)
+  unsigned long number = 1;  //!< step N, wait MS, inspect and pick-action LABEL (inspect 0: none), record K
   double x = 0, y = 0;       //!< rotate DX DY (degrees), zoom F
   //! set NAME=VALUE, action NAME, export MESH, color-by NAME ("" : none),
   //! show WHAT
   std::string name, value;
-  std::string path;          //!< screenshot, window-screenshot, export, plots, save-session, checkpoint, resume
-  bool on = true;            //!< show, replay, rewind-on-change
+  std::string path;          //!< screenshot, window-screenshot, export, plots, save-session, checkpoint, resume, record
+  bool on = true;            //!< show, replay, rewind-on-change, record (off: stop recording)
+  unsigned digits = 0;       //!< record: the width {step} is padded to (0: the default, 5)
   int line = 0;              //!< where it was read (0: not from a file)
 
   //! A command without arguments (or with their defaults).
@@ -63,10 +64,22 @@ struct command {
     return c;
   }
 
+  //! record K FILE, and record off.
+  static command recording(unsigned long every, const std::string& file, unsigned digits = 0) {
+    command c = with_path(record, file);
+    c.number = every, c.digits = digits;
+    return c;
+  }
+  static command record_off() {
+    command c = of(record);
+    c.on = false;
+    return c;
+  }
+
   //! The same command (its line aside).
   friend bool operator==(const command& a, const command& b) {
     return a.kind == b.kind && a.number == b.number && a.x == b.x && a.y == b.y && a.name == b.name &&
-           a.value == b.value && a.path == b.path && a.on == b.on;
+           a.value == b.value && a.path == b.path && a.on == b.on && a.digits == b.digits;
   }
   friend bool operator!=(const command& a, const command& b) { return !(a == b); }
 };

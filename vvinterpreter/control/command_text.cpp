@@ -25,6 +25,7 @@ enum class args {
   field_or_none,  // NAME, or "none" ("")
   show,           // WHAT on|off
   on_off,         // on|off
+  record,         // K FILE [DIGITS], or "off"
 };
 
 struct command_spec {
@@ -64,6 +65,9 @@ const command_spec specs[] = {
      "write the model's events, for --replay FILE"},
     {"checkpoint", command::checkpoint, args::path, "checkpoint FILE",
      "save the model's whole state, to go on from it later (resume FILE, --resume FILE)"},
+    {"record", command::record, args::record, "record K FILE [DIGITS]",
+     "write FILE (a mesh, .png, .mp4) now and at each step that is a multiple of K, {step} in it the step "
+     "(DIGITS wide, default 5); record off: the last state, and stop"},
     {"screenshot", command::screenshot, args::path, "screenshot FILE.png", "save the view without the panel"},
     {"window-screenshot", command::window_screenshot, args::path, "window-screenshot F",
      "save the whole window, panel included"},
@@ -167,6 +171,15 @@ bool read_arguments(args a, const std::vector<std::string>& w, command& c) {
       return false;
     }
     case args::on_off: return n == 1 && on_off(w[0], c.on);
+    case args::record: {
+      if (n == 1 && w[0] == "off") return c.on = false, true;
+      unsigned long digits = 0;
+      if ((n != 2 && n != 3) || !whole_number(w[0], 1, c.number) || w[1].empty()) return false;
+      if (n == 3 && (!whole_number(w[2], 1, digits) || digits > 20)) return false;
+      c.path = w[1];
+      c.digits = static_cast<unsigned>(digits);
+      return true;
+    }
   }
   return false;
 }
@@ -207,6 +220,9 @@ std::string argument_text(args a, const command& c) {
     case args::field_or_none: return " " + (c.name.empty() ? std::string("none") : word_text(c.name));
     case args::show: return " " + c.name + (c.on ? " on" : " off");
     case args::on_off: return c.on ? " on" : " off";
+    case args::record:
+      if (!c.on) return " off";
+      return " " + std::to_string(c.number) + " " + word_text(c.path) + (c.digits ? " " + std::to_string(c.digits) : "");
   }
   return "";
 }
@@ -216,9 +232,8 @@ std::string argument_text(args a, const command& c) {
 std::string command_help() {
   std::string out;
   for (const command_spec& s : specs) {
-    char line[160];
-    std::snprintf(line, sizeof line, "  %-22s %s\n", s.usage, s.help);
-    out += line;
+    std::string usage = s.usage;
+    out += "  " + usage + std::string(usage.size() < 22 ? 22 - usage.size() : 0, ' ') + " " + s.help + "\n";
   }
   return out;
 }

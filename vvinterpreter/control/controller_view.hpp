@@ -35,6 +35,17 @@ class controller_view {
   //! be carried out yet (it is asked again at the next poll).
   virtual bool view(const command&) { return true; }
 
+  //! A picture of a recorded series (control/recording.hpp) of the model
+  //! at `step`: `file` is a .png to write, or a movie (.mp4) that gets the
+  //! frame. "" or the error; a view that takes its pictures later reports
+  //! their errors itself.
+  virtual std::string record_picture(const std::string& file, unsigned long) {
+    return "record " + file + ": this view takes no pictures";
+  }
+  //! The movie `file` gets no more frames: put in place (`keep`) or
+  //! dropped; "" or the error.
+  virtual std::string end_movie(const std::string&, bool) { return ""; }
+
   //! What was done ("reloaded model.vvp"), and files written.
   virtual void say(const std::string&) {}
   virtual void wrote(const std::string& path) { say("wrote " + path); }

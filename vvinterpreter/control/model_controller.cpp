@@ -59,6 +59,8 @@ model_controller::model_controller(const options& o, model_jobs& jobs, controlle
     resume_pending_ = true;
     keep_error_once_ = true;  // the reason for the restart stays shown
     log_ = from.log;
+  } else {
+    log_.initial = runner_.parameter_settings();  // --set: the values the first load starts with
   }
   // What this process tells its supervisor starts afresh.
   record_.restarted = false;
@@ -163,6 +165,7 @@ bool model_controller::carry_out(const command& c, double now) {
     case command::save_params:
     case command::save_session:
     case command::checkpoint: write_out(c); return true;
+    case command::record: record(c); return true;
     case command::replay: record_.replay = c.on; return true;
     case command::rewind_on_change: record_.rewind_on_change = c.on; return true;
     case command::wait: wait_until_ = now + c.number / 1000.0; return true;
@@ -225,7 +228,7 @@ void model_controller::run_step(bool) {
             log_.append(command::steps(1));
             record_.log = log_;
             refresh_facts();
-            view_.model_changed({model_change::stepped});
+            changed({model_change::stepped});
           });
 }
 
@@ -270,7 +273,7 @@ void model_controller::event_done(const command& c, bool ok, const std::string& 
   record_.log = log_;
   refresh_facts();
   if (c.kind == command::reread && !facts_.file_objects.empty()) view_.say("reread " + listed(facts_.file_objects));
-  view_.model_changed({model_change::changed});
+  changed({model_change::changed});
 }
 
 // A parameter is host memory of the model: set between jobs, on this thread.
@@ -292,7 +295,7 @@ void model_controller::set_parameter(const command& c) {
   log_.append(c);
   record_.log = log_;
   refresh_facts();
-  view_.model_changed({model_change::changed});
+  changed({model_change::changed});
 }
 
 void model_controller::write_out(const command& c) {

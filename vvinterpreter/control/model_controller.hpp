@@ -26,6 +26,7 @@
 #include "control/event_log.hpp"
 #include "control/model_facts.hpp"
 #include "control/model_jobs.hpp"
+#include "control/recording.hpp"
 #include "control/state_record.hpp"
 #include "runner/model_runner.hpp"
 
@@ -84,6 +85,13 @@ class model_controller {
   bool failed() const { return !failure_.empty(); }
   const std::string& failure() const { return failure_; }
 
+  //! The series being recorded ("FILE every K steps"), for the panel.
+  std::vector<std::string> recorded_files() const;
+  bool recording() const { return !recording_.empty(); }
+  //! Ends the recording where it is (the window closes): its movies are
+  //! put in place with the frames they have; "" or the error.
+  std::string finish_recording() { return stop_recording(false, true); }
+
   // The parts of the record others keep.
   void update_view(const view_record& v);
   void set_script_position(std::size_t n);
@@ -124,6 +132,13 @@ class model_controller {
   void set_parameter(const command& c);
   void write_out(const command& c);
   void error(const std::string& shown, const std::string& line);
+  //! The view is told, then the series recorded (control/recording.cpp).
+  void changed(const model_change& c);
+  // Time series (control/recording.cpp).
+  void record(const command& c);
+  std::string write_series(recorded_series& s);
+  std::string stop_recording(bool write_last, bool keep_movies);
+  void recording_failed(const std::string& e);
   // Builds, loads and replays (model_loads.cpp).
   void start_build(bool force);
   void finish_build();
@@ -147,6 +162,7 @@ class model_controller {
   event_log log_;
   model_facts facts_;
   std::deque<command> queue_;
+  std::vector<recorded_series> recording_;
   unsigned long steps_left_ = 0;  // of the step or run command going on
   bool animating_ = false;
   double now_ = 0, last_animated_ = 0, wait_until_ = 0;

@@ -181,7 +181,7 @@ void model_controller::finish_load() {
   keep_error_once_ = false;
   refresh_facts();
   view_.say(r.plan.message);
-  view_.model_changed({model_change::loaded});
+  changed({model_change::loaded});
 }
 
 // After an error in a step, end, action or pick the model may be half

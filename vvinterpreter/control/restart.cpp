@@ -2,6 +2,7 @@
 
 #include "control/command_text.hpp"
 #include "runner/crash_report.hpp"
+#include "runner/report_words.hpp"
 
 namespace vvi {
 
@@ -24,6 +25,13 @@ std::string note_for(const state_record& r) {
 
 }  // namespace
 
+bool ended_by_model_exit(const child_end& end) {
+  // The window's own restart leaves by _exit (no handler runs); a model's
+  // exit() is seen by the handler, whatever status it gave.
+  return end.kind == child_end::exited && model_activity(end.activity.what) &&
+         (end.exit_code != viewer_restart_code || end.sample.why == report_words::exit_call);
+}
+
 restart restart_after(const options& o, const state_record& last, const child_end& end) {
   restart out;
   state_record& r = out.record;
@@ -33,7 +41,10 @@ restart restart_after(const options& o, const state_record& last, const child_en
   r.stopped.clear(), r.stopped_activity.clear();
   r.trying.clear();
   r.replaying = -1;
-  bool stopped = end.kind == child_end::exited;
+  // A window that exited asked for a restart after a Stop, or its model
+  // ended the process itself inside a block (exit()): a fault like a crash.
+  bool model_exit = ended_by_model_exit(end);
+  bool stopped = end.kind == child_end::exited && !model_exit;
   std::string what = stopped ? last.stopped_activity : end.activity.what;
   std::string replay_note;
   if (!last.trying.empty()) {
@@ -58,7 +69,7 @@ restart restart_after(const options& o, const state_record& last, const child_en
     r.error = stopped_place(end, o.model) + ": " + last.stopped + "; " + r.note;
     out.report = "vvinterpreter: " + r.error + "\n";
   } else {
-    crash_text t = describe_crash(end, o.model);
+    crash_text t = model_exit ? describe_exit(end, o.model) : describe_crash(end, o.model);
     out.report = "vvinterpreter: " + t.line + replay_note + "\n" + t.stack;
     r.error = t.panel + replay_note + (t.stack.empty() ? "" : "\n" + t.stack);
   }

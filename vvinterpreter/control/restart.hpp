@@ -20,8 +20,14 @@ struct restart {
   std::string report;   //!< what to say on standard error (lines ending in '\n')
 };
 
+//! Whether the window process ended because its model called exit() (or
+//! _exit) inside one of its blocks, not because the viewer quit or asked
+//! for a restart.
+bool ended_by_model_exit(const child_end& end);
+
 //! `last`: the record the dead window sent last; `end`: how it ended (a
-//! crash, a time-out, or its exit asking for a restart after a Stop).
+//! crash, a time-out, its exit asking for a restart after a Stop, or its
+//! model's exit()).
 restart restart_after(const options& o, const state_record& last, const child_end& end);
 
 }  // namespace vvi

@@ -107,7 +107,7 @@ void mesh_drawing::update(const vv_geometry& g, bool flat) {
       bar_.set(value_min_, value_max_, g.value_field ? g.value_field : "");
     }
     std::vector<glm::dvec3> normals(n, glm::dvec3(0));
-    for (std::size_t i = 0; i < n; ++i) bounds_.add(position_of(g, std::uint32_t(i)));
+    bounds_ = geometry_bounds(g);
     for (std::size_t f = 0; f < g.face_count; ++f) {
       const std::uint32_t* c = g.face_vertices + g.face_offsets[f];
       std::size_t k = g.face_offsets[f + 1] - g.face_offsets[f];
@@ -262,14 +262,25 @@ int colour_bar_strip(session* model, const mesh_drawing* fallback, int width) {
 }
 
 box view_box(session* model, const mesh_drawing* drawing) {
+  return view_box(model, drawing ? drawing->bounds() : box());
+}
+
+box geometry_bounds(const vv_geometry& g) {
+  box b;
+  std::size_t n = g.positions ? g.vertex_count : 0;
+  for (std::size_t i = 0; i < n; ++i) b.add(position_of(g, std::uint32_t(i)));
+  return b;
+}
+
+box view_box(session* model, const box& drawing_bounds) {
   box b;
   vv_run_settings p{};
   if (model) p = model->run_settings();
   if (p.has_view_volume) {
     b.add({p.view_min[0], p.view_min[1], p.view_min[2]});
     b.add({p.view_max[0], p.view_max[1], p.view_max[2]});
-  } else if (drawing && !drawing->bounds().empty) {
-    b = drawing->bounds();
+  } else if (!drawing_bounds.empty) {
+    b = drawing_bounds;
   } else {
     b.add({-1, -1, -1});
     b.add({1, 1, 1});

@@ -99,6 +99,10 @@ bool edges_visible(const mesh_drawing& d, const display_style& style, const came
 //! The box the view must show: the proxy's view volume when the program set
 //! one, else the drawing's bounds, else the unit cube.
 box view_box(session* model, const mesh_drawing* drawing);
+//! The same from the drawing's bounds (geometry_bounds), without GL.
+box view_box(session* model, const box& drawing_bounds);
+//! The bounds of the geometry's vertices, as a drawing of it has them.
+box geometry_bounds(const vv_geometry& g);
 
 //! Calls the model's render_init block (a GL context was created).
 bool init_rendering(session* model, std::string& error);

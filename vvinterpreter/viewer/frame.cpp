@@ -42,6 +42,7 @@ panel_state panel_state_of(const viewer_parts& v) {
   s.animating = c.animating();
   s.replay = c.record().replay;
   s.rewind_on_change = c.record().rewind_on_change;
+  s.recording = c.recorded_files();
   s.error = v.view.error();
   s.warnings = c.warnings();
   s.message = v.view.message();
@@ -80,9 +81,10 @@ void draw_scene(viewer_parts& v, int w, int h) {
   session* model = c.busy() ? nullptr : c.runner().model();
   v.layout.bar_strip = double(scene.bar_strip(model, w)) / w;
   if (!c.busy()) {
-    std::vector<std::string> shots = v.view.take_scene_shots();
+    std::vector<scene_shot> shots = v.view.take_scene_shots();
     if (!shots.empty()) scene.draw(model, w, h, 0);
-    for (const std::string& path : shots) v.view.save_picture(path, w, h);
+    for (const scene_shot& shot : shots) v.view.save_picture(shot, w, h);
+    if (!shots.empty()) v.view.pictures_taken();
   }
   int window_w = 0, window_h = 0;
   v.window.size(window_w, window_h);
@@ -124,7 +126,7 @@ void draw_one_frame(viewer_parts& v) {
   ImGui::Render();
   ImGui_ImplOpenGL2_RenderDrawData(ImGui::GetDrawData());
   std::string window_shot = v.view.take_window_shot();
-  if (!window_shot.empty() && w > 0 && h > 0) v.view.save_picture(window_shot, w, h);
+  if (!window_shot.empty() && w > 0 && h > 0) v.view.save_picture({window_shot}, w, h);
   v.window.swap();
   give(v, std::move(a.commands));
   int place[4];

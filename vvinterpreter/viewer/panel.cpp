@@ -96,6 +96,8 @@ panel_actions draw_panel_once(const panel_state& s, bool& changed_size) {
   button("End", command::end);
   ImGui::SameLine();
   button("Reread files", command::reread);
+  ImGui::SameLine();
+  draw_record(s, a);
   if (disabled) ImGui::EndDisabled();
   button("Recompile", command::recompile);
   ImGui::SameLine();
@@ -116,6 +118,7 @@ panel_actions draw_panel_once(const panel_state& s, bool& changed_size) {
   ImGui::Text("step %u", s.steps);
   if (s.steps > 0) ImGui::Text("last step: %.2f ms", s.last_step_ms);
   for (const auto& [name, count] : s.meshes) ImGui::Text("mesh %s: %zu vertices", name.c_str(), count);
+  for (const std::string& r : s.recording) ImGui::TextColored(ImVec4(0.8f, 0.1f, 0.1f, 1), "recording %s", r.c_str());
   if (!s.message.empty()) ImGui::TextDisabled("%s", s.message.c_str());
   if (!s.error.empty()) {
     ImGui::Separator();

@@ -37,6 +37,7 @@ struct panel_state {
 
   std::vector<parameter_view> parameters;
   bool rewind_on_change = false;  // a parameter change re-runs from start to the step
+  std::vector<std::string> recording;  // the series being recorded ("FILE every K steps")
   std::vector<plot_view> plots;
   display_style style;
   bool auto_fit = true;
@@ -67,6 +68,9 @@ void draw_inspector(const panel_state& s, panel_actions& a);
 void draw_parameters(const panel_state& s, panel_actions& a);
 void draw_plots(const panel_state& s);
 void draw_display(const panel_state& s, panel_actions& a);
+//! The Record button beside the model's buttons, with its settings in a
+//! popup; Stop recording while it records.
+void draw_record(const panel_state& s, panel_actions& a);
 
 //! Draws the panel; the first window of the frame (when its content
 //! changed size, the frame is laid out again: see panel.cpp).

@@ -153,6 +153,46 @@ void draw_display(const panel_state& s, panel_actions& a) {
   }
 }
 
+// Record: a time series while you step (the command record K FILE): the
+// meshes, the pictures, or both, every K steps; the names' {step} is the
+// step. Its settings are in a popup, so the panel grows by nothing; the
+// fields keep what was typed for the whole session.
+void draw_record(const panel_state& s, panel_actions& a) {
+  static int every = 1;
+  static bool meshes = true, pictures = true;
+  static char mesh_file[256] = "vv_mesh_{step}.vtp";
+  static char picture_file[256] = "vv_frame_{step}.png";
+  if (!s.recording.empty()) {
+    if (ImGui::Button("Stop recording")) a.add(command::record_off());
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("writes the state it stops at too, and puts a movie in place");
+    return;
+  }
+  if (ImGui::Button("Record...")) ImGui::OpenPopup("Record");
+  if (ImGui::IsItemHovered()) ImGui::SetTooltip("write meshes and pictures (or a movie) every K steps");
+  if (!ImGui::BeginPopup("Record")) return;
+  ImGui::SetNextItemWidth(100);
+  if (ImGui::InputInt("every K steps", &every)) every = std::max(every, 1);
+  ImGui::Checkbox("mesh   ", &meshes);
+  ImGui::SameLine();
+  ImGui::SetNextItemWidth(260);
+  ImGui::InputText("##mesh file", mesh_file, sizeof mesh_file);
+  if (ImGui::IsItemHovered()) ImGui::SetTooltip(".vtp (listed in a .pvd for ParaView), .vvm .obj .off .ply .stl");
+  ImGui::Checkbox("picture", &pictures);
+  ImGui::SameLine();
+  ImGui::SetNextItemWidth(260);
+  ImGui::InputText("##picture file", picture_file, sizeof picture_file);
+  if (ImGui::IsItemHovered()) ImGui::SetTooltip(".png a picture a step, .mp4 a movie (ffmpeg)");
+  ImGui::TextDisabled("{step} in a name is the step; written now, then after every step that is a multiple of K");
+  if (!meshes && !pictures) ImGui::BeginDisabled();
+  if (ImGui::Button("Start recording")) {
+    if (meshes) a.add(command::recording(static_cast<unsigned long>(every), mesh_file));
+    if (pictures) a.add(command::recording(static_cast<unsigned long>(every), picture_file));
+    ImGui::CloseCurrentPopup();
+  }
+  if (!meshes && !pictures) ImGui::EndDisabled();
+  ImGui::EndPopup();
+}
+
 void draw_inspector(const panel_state& s, panel_actions& a) {
   if (s.picked.empty()) return;
   // A new pick opens the section, also after the user folded it.

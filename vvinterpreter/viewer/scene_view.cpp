@@ -45,7 +45,7 @@ void scene_view::refresh(const model_runner& r) {
   drawing_.update(g, style_.flat);
   inspect_.update(g);
   if (std::string pe = inspect_.describe(r); !pe.empty()) say_.show_error(pe, pe);
-  if (auto_fit_ && !camera_moved_ && camera_set_) fit_view(r.model());
+  if (auto_fit_ && !camera_moved_ && camera_set_ && !hold_framing_) fit_view(r.model());
 }
 
 bool scene_view::carry_out(const command& c, const model_runner& r, bool busy) {

@@ -54,6 +54,10 @@ class scene_view {
   void pan(double dx, double dy, int w, int h);
   void zoom(double factor);
 
+  //! While a series is recorded its pictures keep one framing: the view
+  //! does not follow the model (auto-fit) while held.
+  void hold_framing(bool on) { hold_framing_ = on; }
+
   //! How the view shows the model, for the state record.
   view_record record(const view_record& base) const;
   bool render_failed() const { return render_failed_; }
@@ -77,6 +81,7 @@ class scene_view {
   bool camera_set_ = false;
   display_style style_;
   bool auto_fit_ = true, camera_moved_ = false;  // auto-fit until the user moves the view
+  bool hold_framing_ = false;
   std::string color_by_;
   inspection inspect_;
   bool render_failed_ = false;

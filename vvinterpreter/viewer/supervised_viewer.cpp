@@ -30,7 +30,8 @@ int run_viewer(const options& o) {
     supervision s;
     s.on_line = [&](const std::string& line) { read_record_line(line, heard); };
     child_end end = run_supervised([&] { return run_viewer_window(o, record); }, s);
-    if (end.kind == child_end::exited && end.exit_code != viewer_restart_code) {
+    bool model_exit = ended_by_model_exit(end) && heard.up && !heard.quitting;
+    if (end.kind == child_end::exited && end.exit_code != viewer_restart_code && !model_exit) {
       remove_module_copies(end);
       return end.exit_code;
     }

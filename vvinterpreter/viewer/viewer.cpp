@@ -56,6 +56,8 @@ int run_viewer_window(const options& o, const state_record& from) {
     std::fflush(nullptr);
     _exit(0);
   }
+  // A movie being recorded keeps the frames it has.
+  if (std::string e = controller.finish_recording(); !e.empty()) std::fprintf(stderr, "vvinterpreter: %s\n", e.c_str());
   window.set_input(nullptr);
   view.scene().release();
   controller.close_model();

@@ -8,6 +8,7 @@
 #include "control/model_controller.hpp"
 #include "render/image.hpp"
 #include "runner/fault_guard.hpp"
+#include "series/step_names.hpp"
 
 namespace vvi {
 
@@ -17,13 +18,15 @@ window_view::window_view(const options& o, const state_record& from)
 }
 
 bool window_view::caught_up() const {
-  return drawn_since_job_ && !frame_wanted_ && shot_path_.empty() && window_shot_path_.empty();
+  return drawn_since_job_ && !frame_wanted_ && shot_path_.empty() && window_shot_path_.empty() &&
+         series_shots_.empty();
 }
 
 void window_view::model_changed(const model_change& c) {
   drawn_since_job_ = false;  // each state a job leaves is drawn (and recorded) once before the next
   watch_.model_files(controller_->facts().file_objects);
   const model_runner& r = controller_->runner();
+  scene_.hold_framing(controller_->recording());  // a recording keeps its view
   if (c.kind == model_change::loaded) {
     const std::string& no_render = controller_->record().no_render_plugin;
     scene_.loaded(r, no_render.empty() || no_render != r.plugin_path());
@@ -71,18 +74,45 @@ void window_view::compiling() {
   std::fflush(stdout);
 }
 
-std::vector<std::string> window_view::take_scene_shots() {
-  std::vector<std::string> paths;
+std::string window_view::record_picture(const std::string& file, unsigned long step) {
+  scene_.hold_framing(true);
+  series_shots_.push_back({file, step});
+  return "";
+}
+
+std::string window_view::end_movie(const std::string& file, bool keep) {
+  movies_ending_[file] = keep;
+  if (series_shots_.empty()) pictures_taken();
+  return "";
+}
+
+void window_view::pictures_taken() {
+  for (const auto& [file, keep] : movies_ending_) {
+    auto m = movies_.find(file);
+    if (m == movies_.end()) continue;
+    std::string e = keep ? m->second->finish() : "";
+    if (!e.empty()) show_error(e, e);
+    else if (keep) say("wrote " + file);
+    movies_.erase(m);
+  }
+  movies_ending_.clear();
+  if (!controller_->recording()) scene_.hold_framing(false);
+}
+
+std::vector<scene_shot> window_view::take_scene_shots() {
+  std::vector<scene_shot> paths;
   if (frame_wanted_ && controller_->facts().loaded) {
     std::error_code ec;
     std::filesystem::create_directories(o_.frames, ec);
     char name[32];
     std::snprintf(name, sizeof name, "/frame_%05u.png", controller_->facts().steps);
-    paths.push_back(o_.frames + name);
+    paths.push_back({o_.frames + name});
   }
   frame_wanted_ = false;
-  if (!shot_path_.empty()) paths.push_back(shot_path_);
+  if (!shot_path_.empty()) paths.push_back({shot_path_});
   shot_path_.clear();
+  paths.insert(paths.end(), series_shots_.begin(), series_shots_.end());
+  series_shots_.clear();
   return paths;
 }
 
@@ -92,8 +122,18 @@ std::string window_view::take_window_shot() {
   return path;
 }
 
-void window_view::save_picture(const std::string& path, int w, int h) {
-  std::string e = write_png(path, w, h, read_pixels(w, h));
+void window_view::save_picture(const scene_shot& shot, int w, int h) {
+  const std::string& path = shot.path;
+  std::string e;
+  if (series_file_of(path) == series_file::movie) {
+    std::unique_ptr<movie_writer>& movie = movies_[path];
+    if (!movie) movie = movie_writer::open(path, w, h, o_.fps, e);
+    if (movie) e = movie->add(shot.step, read_pixels(w, h), w, h);
+    if (!e.empty()) movies_.erase(path);  // a movie that misses a frame is not written
+    if (!e.empty()) show_error(e, e);
+    return;
+  }
+  e = write_png(path, w, h, read_pixels(w, h));
   if (e.empty()) say("wrote " + path);
   else show_error(e, e);
 }

@@ -4,16 +4,26 @@
 // files, and the state record sent to the supervisor.
 #pragma once
 
+#include <map>
+#include <memory>
 #include <string>
+#include <vector>
 
 #include "app/options.hpp"
 #include "control/controller_view.hpp"
+#include "series/movie.hpp"
 #include "viewer/build_watch.hpp"
 #include "viewer/scene_view.hpp"
 
 namespace vvi {
 
 class model_controller;
+
+//! A picture of the scene to take: a file, or a movie's frame of a step.
+struct scene_shot {
+  std::string path;
+  unsigned long step = 0;
+};
 
 class window_view : public controller_view, public messages {
  public:
@@ -33,19 +43,23 @@ class window_view : public controller_view, public messages {
   void build_started() override { watch_.build_started(); }
   void compiling() override;
   void build_finished(const build_result& b) override { watch_.build_finished(b); }
+  std::string record_picture(const std::string& file, unsigned long step) override;
+  std::string end_movie(const std::string& file, bool keep) override;
 
   // ---- for the frame ----
   scene_view& scene() { return scene_; }
   build_watch& watch() { return watch_; }
   //! A frame was drawn; `idle`: without the model's code running.
   void drawn(bool idle) { drawn_since_job_ = drawn_since_job_ || idle; }
-  //! The picture of the scene (without the panel) is wanted now: the paths
-  //! to write it to. Taken once.
-  std::vector<std::string> take_scene_shots();
+  //! The picture of the scene (without the panel) is wanted now: the
+  //! files to write it to (pictures, movies' frames). Taken once.
+  std::vector<scene_shot> take_scene_shots();
   //! The picture of the whole window is wanted: its path ("" : none). Taken once.
   std::string take_window_shot();
-  //! Writes a picture of the current GL frame.
-  void save_picture(const std::string& path, int w, int h);
+  //! Writes a picture of the current GL frame (a .mp4: a frame of the movie).
+  void save_picture(const scene_shot& shot, int w, int h);
+  //! The pictures taken: the movies whose recording ended are put in place.
+  void pictures_taken();
   //! The next free vv_screenshot_NNN.png, and vv_session_NNN.vvs.
   std::string next_screenshot_name();
   std::string next_session_name();
@@ -68,6 +82,9 @@ class window_view : public controller_view, public messages {
   bool drawn_since_job_ = true;
   bool frame_wanted_ = false;  // proxy.record_frame, after a step
   std::string shot_path_, window_shot_path_;
+  std::vector<scene_shot> series_shots_;  // of recorded series, for the next frame
+  std::map<std::string, std::unique_ptr<movie_writer>> movies_;
+  std::map<std::string, bool> movies_ending_;  // once their last frames are taken: keep them?
   int screenshots_ = 0;
   std::string last_checkpoint_;
   bool quit_ = false;
