@@ -30,8 +30,9 @@ bool content_changed_size() {
   return changed;
 }
 
-// Save checkpoint (the next free vv_checkpoint_NNN.ckpt), and Resume from
-// the file named beside it: the last one saved, or any the user types.
+// Save checkpoint (the next free vv_checkpoint_NNN.ckpt), and Resume...:
+// a popup naming the file to go on from, the last one saved or any the
+// user types. Beside Step, so the panel grows by no row.
 void draw_checkpoints(const panel_state& s, panel_actions& a) {
   static char file[512] = "";
   static std::string offered;
@@ -43,10 +44,20 @@ void draw_checkpoints(const panel_state& s, panel_actions& a) {
   if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled))
     ImGui::SetTooltip("save the model's whole state, to go on from it later");
   ImGui::SameLine();
-  if (ImGui::Button("Resume") && file[0]) a.add(command::with_path(command::resume, file));
-  ImGui::SameLine();
-  ImGui::SetNextItemWidth(180);
-  ImGui::InputText("##checkpoint", file, sizeof file);
+  if (ImGui::Button("Resume...")) ImGui::OpenPopup("Resume");
+  if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled))
+    ImGui::SetTooltip("go on from a checkpoint: the last one saved, or a file you name");
+  if (!ImGui::BeginPopup("Resume")) return;
+  ImGui::SetNextItemWidth(260);
+  ImGui::InputText("checkpoint file", file, sizeof file);
+  bool none = !file[0];
+  if (none) ImGui::BeginDisabled();
+  if (ImGui::Button("Resume")) {
+    a.add(command::with_path(command::resume, file));
+    ImGui::CloseCurrentPopup();
+  }
+  if (none) ImGui::EndDisabled();
+  ImGui::EndPopup();
 }
 
 // The panel, once; `changed_size`: its content needs another size than
@@ -91,6 +102,8 @@ panel_actions draw_panel_once(const panel_state& s, bool& changed_size) {
     button("Animate", command::animate);
     if (!s.can_animate) ImGui::EndDisabled();
   }
+  ImGui::SameLine();
+  draw_checkpoints(s, a);
   button("Rewind", command::rewind);
   ImGui::SameLine();
   button("End", command::end);
@@ -109,7 +122,6 @@ panel_actions draw_panel_once(const panel_state& s, bool& changed_size) {
   button("Save session", command::save_session);
   if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled))
     ImGui::SetTooltip("write what was done to the model, for --replay");
-  draw_checkpoints(s, a);
   if (disabled) ImGui::EndDisabled();
   bool replay = s.replay;
   if (ImGui::Checkbox("After a reload or restart, run again to the step", &replay))
