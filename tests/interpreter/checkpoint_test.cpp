@@ -5,10 +5,13 @@
 // cut short or damaged, each with its message and nothing written.
 #include <gtest/gtest.h>
 
+#include <cstdint>
 #include <filesystem>
 #include <fstream>
 #include <string>
 #include <vector>
+
+#include <vv/io/vtk_files.hpp>
 
 #include "run_interpreter.hpp"
 #include "test_files.hpp"
@@ -125,6 +128,35 @@ TEST(Checkpoint, ACheckpointOfAResumedRunResumesToo) {
   test_run::result last = batch({"--seed", "9", "--resume", dir + "4.ckpt", "--steps", "1", "--end"}, model);
   ASSERT_EQ(last.status, 0) << report(last);
   EXPECT_EQ(last.out, straight.out);
+}
+
+// A time series goes on from a checkpoint: the resumed run's files from
+// the checkpoint's step on are the uninterrupted run's, byte for byte (the
+// one at the checkpoint's step is the first part's last), and its .pvd
+// lists the files it wrote.
+TEST(Checkpoint, AResumedTimeSeriesWritesTheFilesOfTheUninterruptedOne) {
+  const std::string model = examples + "phyllotaxis.vvp";
+  const std::string dir = test_files::scratch_dir() + "series_";
+  for (const char* part : {"straight", "first", "resumed"}) std::filesystem::create_directories(dir + part);
+  const std::vector<std::string> random = {"--seed", "5", "--set", "noise=0.3", "--every", "5"};
+  test_run::result straight =
+      batch(with(random, {"--steps", "24", "--export", dir + "straight/p-{step}.vtp"}), model);
+  ASSERT_EQ(straight.status, 0) << report(straight);
+  test_run::result first = batch(
+      with(random, {"--steps", "9", "--export", dir + "first/p-{step}.vtp", "--checkpoint", dir + "9.ckpt"}), model);
+  ASSERT_EQ(first.status, 0) << report(first);
+  test_run::result resumed = batch(
+      with(random, {"--resume", dir + "9.ckpt", "--steps", "15", "--export", dir + "resumed/p-{step}.vtp"}), model);
+  ASSERT_EQ(resumed.status, 0) << report(resumed);
+  for (const char* step : {"10", "15", "20", "24"}) {
+    const std::string expected = test_files::slurp(dir + "straight/p-" + step + ".vtp");
+    EXPECT_FALSE(expected.empty()) << step;
+    EXPECT_EQ(test_files::slurp(dir + "resumed/p-" + step + ".vtp"), expected) << "step " << step;
+  }
+  EXPECT_EQ(test_files::slurp(dir + "resumed/p-09.vtp"), test_files::slurp(dir + "first/p-9.vtp"));
+  std::vector<std::uint64_t> listed;
+  for (const vv::pvd_entry& e : vv::read_pvd(dir + "resumed/p.pvd")) listed.push_back(e.step);
+  EXPECT_EQ(listed, (std::vector<std::uint64_t>{9, 10, 15, 20, 24}));
 }
 
 // Each global a checkpoint cannot hold is named with its .vvp line, its
