@@ -220,11 +220,12 @@ TEST(ModelCache, RebuildIsRefusedByTheViewer) {
             "button)");
 }
 
-// Two builds of one model at once into one cache both succeed, and each
-// plugin stays for its process to load. Where the machine allows, each runs
-// as process 1 of a PID namespace of its own, as in two containers sharing
-// a cache: temporaries named by process id would be the same file.
-TEST(ModelCache, TwoBuildsOfOneModelAtOnceBothSucceed) {
+// Two builds of one model at once into one cache both succeed: the model is
+// compiled once, and the second build uses the first's plugin. Where the
+// machine allows, each runs as process 1 of a PID namespace of its own, as
+// in two containers sharing a cache: temporaries named by process id would
+// be the same file.
+TEST(ModelCache, TwoBuildsOfOneModelAtOnceCompileItOnceAndBothUseIt) {
   const std::string dir = fresh_dir("at_once");
   const std::string model = dir + "t.vvp";
   write(model, tiny_model("at once"));
@@ -242,6 +243,11 @@ TEST(ModelCache, TwoBuildsOfOneModelAtOnceBothSucceed) {
   EXPECT_EQ(b.status, 0) << report(b);
   EXPECT_TRUE(fs::is_regular_file(plugin_of(a))) << report(a);
   EXPECT_TRUE(fs::is_regular_file(plugin_of(b))) << report(b);
+  // One compiled it; the other waited for it (the key's build lock) and
+  // found that build in the cache.
+  const bool a_found = contains(a.out, model + found_in_cache), b_found = contains(b.out, model + found_in_cache);
+  EXPECT_NE(a_found, b_found) << report(a) << report(b);
+  EXPECT_EQ(plugin_of(a), plugin_of(b)) << report(a) << report(b);
   test_run::result ran = run({"--batch", model});
   EXPECT_EQ(ran.status, 0) << report(ran);
   EXPECT_TRUE(contains(ran.out, model + found_in_cache)) << report(ran);

@@ -76,8 +76,13 @@ declarations_part find_declarations(const std::string& cache_dir, const std::str
 }
 
 declarations_part build_declarations(const declarations_request& r) {
-  declarations_part part;  // missing until stored
   std::string folder = folder_of(r.cache_dir);
+  // Another model with these declarations may be compiling them now: wait
+  // for it and use its part.
+  cache::build_lock lock(folder, r.key);
+  declarations_part part = find_declarations(r.cache_dir, r.key);
+  if (part.state != declarations_part::missing) return part;
+  part = {};  // missing until stored
   std::string work = new_work_folder(folder, r.key);
   std::error_code ec;
   if (work.empty() || !write_file(work + "/declarations.cpp", r.cpp)) {

@@ -346,6 +346,8 @@ build_result build_unguarded(const std::string& path, const build_settings& s) {
   model_builder b(path, s);
   if (std::optional<build_result> done = b.translate()) return *done;
   b.name_the_build();
+  // Another process may be compiling this very model: wait, then find its build.
+  cache::build_lock lock(b.plugins, b.key);
   if (std::optional<build_result> done = b.find_in_cache()) return *done;
   if (std::optional<build_result> done = b.prepare_work()) return *done;
   return b.compile_and_store();

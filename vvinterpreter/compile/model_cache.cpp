@@ -1,6 +1,7 @@
 #include "compile/model_cache.hpp"
 
 #include <fcntl.h>
+#include <sys/file.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
@@ -128,6 +129,9 @@ bool is_link(const fs::path& p) {
 // manifests (KEY itself a folder).
 bool unwanted(const fs::path& folder, const std::string& name) {
   if (name.rfind("tmp-", 0) == 0 || name.rfind("link-", 0) == 0) return true;
+  // A build's lock file, once old: removing one a build still holds costs
+  // at most one compile made twice, never a wrong build.
+  if (name.rfind("lock-", 0) == 0) return true;
   std::size_t dot = name.find('.');
   if (dot == std::string::npos) return !is_link(folder / name);
   std::error_code ec;
@@ -147,6 +151,23 @@ void remove_leftovers(const std::string& folder, std::chrono::seconds age) {
     std::error_code rm;
     fs::remove_all(it->path(), rm);
   }
+}
+
+build_lock::build_lock(const std::string& folder, const std::string& key) {
+  std::error_code ec;
+  fs::create_directories(folder, ec);
+  fd_ = ::open((folder + "/lock-" + key).c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644);
+  if (fd_ < 0) return;
+  while (::flock(fd_, LOCK_EX) != 0) {
+    if (errno == EINTR) continue;
+    ::close(fd_);  // a file system without locks: unlocked, as before
+    fd_ = -1;
+    return;
+  }
+}
+
+build_lock::~build_lock() {
+  if (fd_ >= 0) ::close(fd_);  // closing releases the lock
 }
 
 }  // namespace vvi::cache

@@ -52,4 +52,21 @@ inline constexpr std::chrono::seconds leftover_age{3600};
 //! are older than `age`.
 void remove_leftovers(const std::string& folder, std::chrono::seconds age = leftover_age);
 
+//! Held while one key is looked up and built: builds of the same key (two
+//! tests, two sweeps, a viewer and a batch run) wait for each other, so the
+//! second finds the first's build instead of compiling it again. The lock
+//! is the file `folder`/lock-KEY under flock(2): the kernel releases it when
+//! its holder dies, so a killed build never blocks the next. Without the
+//! file (a read-only cache) builds go on unlocked, as before.
+class build_lock {
+ public:
+  build_lock(const std::string& folder, const std::string& key);
+  ~build_lock();
+  build_lock(const build_lock&) = delete;
+  build_lock& operator=(const build_lock&) = delete;
+
+ private:
+  int fd_ = -1;
+};
+
 }  // namespace vvi::cache

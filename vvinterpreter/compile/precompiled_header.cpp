@@ -16,26 +16,41 @@ const char* const header_file = "model/model.hpp.gch";
 
 }  // namespace
 
+namespace {
+
+// The header the key names now, if it is whole (its damage said and
+// discarded otherwise). Resolved once: another process may publish a new
+// one meanwhile.
+std::string finished_header(const std::string& folder, const std::string& key, std::string& damage) {
+  std::error_code ec;
+  fs::path current = fs::canonical(folder + "/" + key, ec);
+  if (ec) return "";
+  std::string why;
+  cache::verdict v = cache::verify(current.string(), why);
+  if (v == cache::verdict::good) return current.string();
+  // Its size is checked, not its content: reading 100 MB would add tens
+  // of milliseconds to every compile, and a header the compiler cannot
+  // read is rebuilt after the compile fails (unreadable_precompiled_header).
+  if (v == cache::verdict::damaged) {
+    damage = why;
+    discard_precompiled_header(current.string());
+  }
+  return "";
+}
+
+}  // namespace
+
 std::string precompiled_header_dir(const header_request& r, std::string& damage, std::string& error) {
   std::string folder = r.cache_dir + "/pch";
   std::error_code ec;
   fs::create_directories(folder, ec);
   cache::remove_leftovers(folder);
-  // The build the key names now, resolved once: another process may publish
-  // a new one meanwhile.
-  fs::path current = fs::canonical(folder + "/" + r.key, ec);
-  if (!ec) {
-    std::string why;
-    cache::verdict v = cache::verify(current.string(), why);
-    if (v == cache::verdict::good) return current.string();
-    // Its size is checked, not its content: reading 100 MB would add tens
-    // of milliseconds to every compile, and a header the compiler cannot
-    // read is rebuilt after the compile fails (unreadable_precompiled_header).
-    if (v == cache::verdict::damaged) {
-      damage = why;
-      discard_precompiled_header(current.string());
-    }
-  }
+  std::string found = finished_header(folder, r.key, damage);
+  if (!found.empty()) return found;
+  // Another build may be making this header now: wait for it and use it.
+  cache::build_lock lock(folder, r.key);
+  found = finished_header(folder, r.key, damage);
+  if (!found.empty()) return found;
 
   std::string work = folder + "/tmp-" + r.key + "-" + cache::unique_id();
   fs::create_directories(work + "/model", ec);
