@@ -220,6 +220,33 @@ TEST(ModelCache, RebuildIsRefusedByTheViewer) {
             "button)");
 }
 
+// VV_OPT in the environment gives the default optimisation level, --opt
+// overrides it, and a level it cannot be is refused naming it. The level
+// is read from the command the build kept beside its plugin.
+TEST(ModelCache, VvOptGivesTheDefaultLevelAndOptOverridesIt) {
+  const std::string model = fresh_dir("levels") + "t.vvp";
+  write(model, tiny_model("levels"));
+  auto compile = [&](const std::string& setting, std::vector<std::string> more) {
+    std::vector<std::string> argv = {"env", setting, VV_INTERPRETER, "--cache", VV_TEST_CACHE, "--compile-only"};
+    argv.insert(argv.end(), more.begin(), more.end());
+    argv.push_back(model);
+    return test_run::run(argv, 280);
+  };
+  auto command_of = [](const test_run::result& r) {
+    return test_files::slurp((fs::path(plugin_of(r)).parent_path() / "command").string());
+  };
+  test_run::result quick = compile("VV_OPT=0", {});
+  ASSERT_EQ(quick.status, 0) << report(quick);
+  EXPECT_TRUE(contains(command_of(quick), " -O0 ")) << command_of(quick);
+  test_run::result told = compile("VV_OPT=0", {"--opt", "1"});
+  ASSERT_EQ(told.status, 0) << report(told);
+  EXPECT_TRUE(contains(command_of(told), " -O1 ")) << command_of(told);
+  EXPECT_FALSE(contains(command_of(told), " -O0 ")) << command_of(told);
+  test_run::result bad = compile("VV_OPT=7", {});
+  EXPECT_EQ(bad.status, 2) << report(bad);
+  EXPECT_EQ(bad.err.substr(0, bad.err.find('\n')), "vvinterpreter: VV_OPT needs a level from 0 to 3") << report(bad);
+}
+
 // Two builds of one model at once into one cache both succeed: the model is
 // compiled once, and the second build uses the first's plugin. Where the
 // machine allows, each runs as process 1 of a PID namespace of its own, as

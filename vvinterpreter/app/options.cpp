@@ -248,7 +248,7 @@ void viewer_options(CLI::App& app, options& o) {
 
 void building_options(CLI::App& app, options& o) {
   text(app, "--cache", "DIR", "building", "compiled models (default $VV_CACHE_DIR or ~/.cache/vv)", o.cache);
-  with_value(app, "--opt", "N", "building", "optimisation level for models (0-3, default 1)", [&o](const std::string& v) {
+  with_value(app, "--opt", "N", "building", "optimisation level for models (0-3, default $VV_OPT or 1)", [&o](const std::string& v) {
     o.optimization = static_cast<int>(number(v, 0, 3, "--opt needs a level from 0 to 3"));
   });
   flag(app, "--rebuild", "building",
@@ -365,6 +365,10 @@ parse_result parse_options(int argc, const char* const* argv) {
   std::vector<std::string> models;
   register_options(app, r.opts, models);
   try {
+    // $VV_OPT gives the default level (a test suite's quick builds, a
+    // cluster profile's); --opt overrides it.
+    if (const char* level = std::getenv("VV_OPT"); level && *level)
+      r.opts.optimization = static_cast<int>(number(level, 0, 3, "VV_OPT needs a level from 0 to 3"));
     app.parse(argc, argv);
     check_whole(app, models, r.opts);
     r.ok = true;
