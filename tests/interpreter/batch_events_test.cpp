@@ -100,7 +100,7 @@ TEST(BatchEvents, ASessionLineThatIsNoEventIsAnErrorNamingIt) {
   EXPECT_EQ(r.status, 1) << report(r);
   EXPECT_EQ(r.err, "vvinterpreter: " + session +
                        ":2: 'screenshot' is not one of the model's events (step, end, reread, set, action, "
-                       "pick-action) or rewind\n");
+                       "pick-action), rewind or resume\n");
 }
 
 }  // namespace
