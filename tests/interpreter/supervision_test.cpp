@@ -104,6 +104,20 @@ TEST(Supervision, ALongStepIsToldWithItsLineWhileItRuns) {
   EXPECT_LE(notices.size(), 2u) << report(r);
 }
 
+// A call through a null function pointer stops where no unwinder can
+// start (address 0): the report still names the calling line, taken from
+// the return address the call left.
+TEST(Supervision, ACallThroughANullFunctionPointerNamesTheCallingLine) {
+  test_run::result r = fault(13);
+  ASSERT_FALSE(r.timed_out) << report(r);
+  EXPECT_EQ(r.status, 1) << report(r);
+  EXPECT_EQ(r.out, "step 1\n");
+  std::vector<std::string> lines = lines_of(r.err);
+  ASSERT_GE(lines.size(), 2u) << report(r);
+  EXPECT_EQ(lines[0], "vvinterpreter: " + at("no_function();") + ": crashed with SIGSEGV in step 1") << report(r);
+  EXPECT_EQ(lines[1], "  " + at("no_function();") + " in misbehave()") << report(r);
+}
+
 // A step waiting in a sleep is told too, but not asked where it is: the
 // question (a signal) would cut the sleep short. The step sleeps its 0.6 s.
 TEST(Supervision, ASleepingStepIsToldWithoutCuttingItsSleepShort) {

@@ -125,13 +125,6 @@ void send_maps(char (&buffer)[N]) {
   }
 }
 
-void send_frames() {
-  void* frames[64];
-  int n = backtrace(frames, 64);
-  line l;
-  for (int i = 0; i < n; ++i) (l << words::frame << " ").number(reinterpret_cast<std::uintptr_t>(frames[i]), 16).send();
-}
-
 std::uintptr_t fault_pc(void* context) {
   auto* uc = static_cast<ucontext_t*>(context);
 #if defined(__x86_64__)
@@ -142,6 +135,38 @@ std::uintptr_t fault_pc(void* context) {
   (void)uc;
   return 0;
 #endif
+}
+
+// Where the interrupted code returns to, when it has not yet made a frame
+// of its own: a linker's call stub (PLT), which has no unwind table, or a
+// call through a null function pointer. 0 where unknown.
+std::uintptr_t return_address_at_entry(void* context) {
+  auto* uc = static_cast<ucontext_t*>(context);
+#if defined(__x86_64__)
+  return *reinterpret_cast<const std::uintptr_t*>(uc->uc_mcontext.gregs[REG_RSP]);
+#elif defined(__aarch64__)
+  return static_cast<std::uintptr_t>(uc->uc_mcontext.regs[30]);
+#else
+  (void)uc;
+  return 0;
+#endif
+}
+
+// The stack as return addresses. The unwinder stops at an instruction it has
+// no table for (a PLT stub, address 0): the caller is then added from the
+// interrupted registers, so the report still names the model's line.
+void send_frames(void* context = nullptr) {
+  void* frames[65];
+  int n = backtrace(frames, 64);
+  if (context) {
+    std::uintptr_t pc = fault_pc(context);
+    bool stopped_at_pc = n > 0 && reinterpret_cast<std::uintptr_t>(frames[n - 1]) == pc;
+    if (pc == 0 || stopped_at_pc) {
+      if (std::uintptr_t caller = return_address_at_entry(context)) frames[n++] = reinterpret_cast<void*>(caller);
+    }
+  }
+  line l;
+  for (int i = 0; i < n; ++i) (l << words::frame << " ").number(reinterpret_cast<std::uintptr_t>(frames[i]), 16).send();
 }
 
 void on_fatal(int sig, siginfo_t*, void* context) {
@@ -159,7 +184,7 @@ void on_fatal(int sig, siginfo_t*, void* context) {
     if (activity[0]) (l << words::activity << " " << activity << " ").number(activity_step, 10).send();
     if (exception_text[0]) (l << words::exception << " " << exception_text).send();
     (l << words::pc << " ").number(fault_pc(context), 16).send();
-    send_frames();
+    send_frames(context);
     send_maps(maps_buffer);
     (l << words::end).send();
   }
@@ -190,7 +215,7 @@ void on_sample(int sig, siginfo_t* info, void* context) {
     (l << words::sample << " " << (target ? words::running : words::idle) << " ").number(static_cast<unsigned>(sample_number), 10).send();
     if (target) {
       (l << words::pc << " ").number(fault_pc(context), 16).send();
-      send_frames();
+      send_frames(context);
       send_maps(sample_maps_buffer);
     }
     (l << words::end).send();
