@@ -20,6 +20,8 @@
 #include <string>
 #include <vector>
 
+#include <unistd.h>
+
 #include <util/point.hpp>
 #include <vv/io/mesh_io.hpp>
 #include <vv/vv.hpp>
@@ -77,38 +79,47 @@ inline std::string input_vvm(const std::string& name, const std::string& mesh_fi
   return out;
 }
 
-//! A scratch copy of an example that reads `input` instead of its own model
-//! (the argument of its first readXMLFile call is replaced). The copy reads
-//! a fixed file of this test process, into which `input` is copied, so its
-//! text is the same whatever the input: the interpreter's cache compiles it
-//! once for all the inputs a test runs it on.
-inline std::string example_reading(const std::string& example, const std::string& input) {
+//! The example's copy that reads its input from the file that the
+//! environment variable VV_ORACLE_INPUT names (the argument of its first
+//! readXMLFile call is replaced). Its text and folder are the same for every
+//! test and input, so the interpreter's cache compiles it once for all the
+//! cross-checks (each test process has a scratch folder of its own, and a
+//! copy there was compiled again by every test). Written whole or not at
+//! all: tests running at once may write it together.
+inline std::string example_reading(const std::string& example) {
   const std::string stem = std::filesystem::path(example).stem().string();
-  const std::string fixed_input = test_files::scratch_dir() + "input_of_" + stem + ".vvm";
-  std::filesystem::copy_file(input, fixed_input, std::filesystem::copy_options::overwrite_existing);
   std::string text = test_files::slurp(std::string(VV_SOURCE_DIR) + "/" + example);
   std::regex first_read(R"(readXMLFile\(\s*"[^"]*"\s*\))");
   std::smatch m;
   EXPECT_TRUE(std::regex_search(text, m, first_read)) << example << " has no readXMLFile(\"...\")";
-  text = m.prefix().str() + "readXMLFile(\"" + fixed_input + "\")" + m.suffix().str();
-  std::string out = test_files::scratch_dir() + stem + "_reading_its_input.vvp";
-  if (!std::filesystem::exists(out) || test_files::slurp(out) != text) std::ofstream(out) << text;
+  text = "#include <cstdlib>\n" + m.prefix().str() + "readXMLFile(std::getenv(\"VV_ORACLE_INPUT\"))" +
+         m.suffix().str();
+  const std::string folder = VV_ORACLE_MODELS;
+  std::filesystem::create_directories(folder);
+  const std::string out = folder + "/" + stem + "_reading_its_input.vvp";
+  if (!std::filesystem::exists(out) || test_files::slurp(out) != text) {
+    const std::string temporary = out + ".tmp-" + std::to_string(getpid());
+    std::ofstream(temporary, std::ios::binary) << text;
+    std::filesystem::rename(temporary, out);
+  }
   return out;
 }
 
 //! Runs an example (a .vvp path relative to the source tree, or absolute)
-//! on `input` (a .vvm; empty: its own model) for `steps` steps and gives
-//! the exported mesh; extra arguments go to the interpreter.
+//! on `input` (a mesh file; empty: its own model) for `steps` steps and
+//! gives the exported mesh; extra arguments go to the interpreter.
 inline polygons run_example(const std::string& example, const std::string& input, unsigned steps,
                             const std::vector<std::string>& extra = {}) {
   std::string model = example.front() == '/' ? example : std::string(VV_SOURCE_DIR) + "/" + example;
-  if (!input.empty()) model = example_reading(example, input);
+  if (!input.empty()) model = example_reading(example);
   std::string out = test_files::scratch_dir() + std::filesystem::path(model).stem().string() + "_" +
                     std::to_string(steps) + ".vvm";
   std::vector<std::string> args = {"--batch", "--quiet", "--steps", std::to_string(steps), "--export", out};
   args.insert(args.end(), extra.begin(), extra.end());
   args.push_back(model);
+  if (!input.empty()) setenv("VV_ORACLE_INPUT", std::filesystem::absolute(input).c_str(), 1);
   test_run::result r = test_run::run(test_run::interpreter(args), 600);
+  unsetenv("VV_ORACLE_INPUT");
   EXPECT_EQ(r.status, 0) << model << ": " << r.err;
   if (r.status != 0) return {};
   return read_polygons(out);

@@ -214,7 +214,7 @@ using oracle::model;
 //! Runs an example and reads its export with all fields.
 plain run_plain(const std::string& example, const std::string& input, unsigned steps) {
   oracle::run_example(example, input, steps);
-  std::string model_path = input.empty() ? example : oracle::example_reading(example, input);
+  std::string model_path = input.empty() ? example : oracle::example_reading(example);
   std::string out = test_files::scratch_dir() + std::filesystem::path(model_path).stem().string() + "_" +
                     std::to_string(steps) + ".vvm";
   return read_plain(out);
@@ -498,7 +498,7 @@ void check_adaptive(const std::string& input, unsigned max_steps) {
       graph::context ctx;
       graph::mesh m(ctx);
       std::string out = test_files::scratch_dir() +
-                        std::filesystem::path(input.empty() ? example : oracle::example_reading(example, input))
+                        std::filesystem::path(input.empty() ? example : oracle::example_reading(example))
                             .stem()
                             .string() +
                         "_" + std::to_string(steps) + ".vvm";
