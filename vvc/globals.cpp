@@ -13,10 +13,6 @@ using range = std::pair<std::size_t, std::size_t>;  // pieces [first, last)
 
 bool is_word_piece(const piece& p) { return p.kind == piece_kind::token && p.tok->is_identifier(); }
 
-bool is_group(const piece& p, std::string_view opener) {
-  return p.kind == piece_kind::group && p.tok->is(opener);
-}
-
 // Declarations that define no variable, by their first word.
 bool defines_no_variable(const piece& first) {
   if (!is_word_piece(first)) return !is_token(first, "::");

@@ -133,6 +133,8 @@ bool is_token(const piece& p, std::string_view text) {
          (p.tok->kind == tok::punct || p.tok->kind == tok::identifier);
 }
 
+bool is_group(const piece& p, std::string_view open) { return p.kind == piece_kind::group && p.tok->text == open; }
+
 bool ends_operand(const pieces& run) { return ends_operand(run, run.size()); }
 
 bool ends_operand(const pieces& run, std::size_t n) {

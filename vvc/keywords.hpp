@@ -91,5 +91,7 @@ bool ends_operand(const pieces& run, std::size_t n);
 
 //! A single-token piece with this text.
 bool is_token(const piece& p, std::string_view text);
+//! A bracketed group opened by `open` ("(", "[" or "{").
+bool is_group(const piece& p, std::string_view open);
 
 }  // namespace vvc

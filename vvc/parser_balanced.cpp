@@ -11,10 +11,6 @@ bool is_closer(const token& t) { return t.kind == tok::punct && (t.text == ")" |
 
 std::string_view closer_of(std::string_view open) { return open == "(" ? ")" : open == "[" ? "]" : "}"; }
 
-bool is_group(const piece& p, std::string_view open) {
-  return p.kind == piece_kind::group && p.tok->text == open;
-}
-
 // Tokens that may stand between a parameter list and a body:
 // `) const noexcept -> T& {`.
 bool is_specifier_token(const piece& p) {

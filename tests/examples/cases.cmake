@@ -1,9 +1,5 @@
-# The example cases (cases/*.test), the case machinery's own checks and
-# the tutorial's commands. Included by CMakeLists.txt (the "examples" part).
-add_executable(vvm_check vvm_check.cpp)
-target_link_libraries(vvm_check PRIVATE vv::vvlib)
-vv_strict_warnings(vvm_check)
-
+# The example cases (cases/*.test) and the case machinery's own checks.
+# Included by CMakeLists.txt (the "examples" part).
 option(VV_UPDATE_GOLDEN "The example cases write their exports to tests/golden/ instead of comparing" OFF)
 
 # Under the sanitizers the examples' models are instrumented and built at
@@ -96,18 +92,3 @@ set(deep ${CMAKE_CURRENT_BINARY_DIR}/a-checkout-at-a-path-longer-than-forty-char
 file(MAKE_DIRECTORY ${deep})
 file(CREATE_LINK ${PROJECT_SOURCE_DIR} ${deep}/src SYMBOLIC)
 vv_add_case_checks("_from_a_deep_path" ${deep}/src ${deep}/build)
-
-# docs/tutorial.md section 11, its commands run as written in a copy of the
-# checkout at a deep path, their outputs compared with what the tutorial
-# shows. Once, in the plain build: it checks the tutorial and the case
-# machinery, which the sanitizers do not change.
-if(NOT VV_SANITIZE)
-  add_test(NAME tutorial_regression_test_commands_work_as_written
-           COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/check_tutorial.sh ${PROJECT_SOURCE_DIR} ${CMAKE_BINARY_DIR}
-                   ${CMAKE_CURRENT_BINARY_DIR}/tutorial-in-a-checkout-at-a-path-longer-than-forty-characters/src
-                   $<TARGET_FILE:vvinterpreter> $<TARGET_FILE:vvm_check>
-                   -- -DCMAKE_BUILD_TYPE=${CMAKE_BUILD_TYPE} -DCMAKE_CXX_COMPILER=${CMAKE_CXX_COMPILER}
-                   -DVV_BUILD_BENCHMARKS=OFF)
-  set_tests_properties(tutorial_regression_test_commands_work_as_written PROPERTIES TIMEOUT 600)
-endif()
-

@@ -31,4 +31,10 @@ std::string default_cache_dir() {
   return "/tmp/vv-cache";
 }
 
+std::string absolute_path(const std::string& path) {
+  std::error_code ec;
+  std::filesystem::path p = std::filesystem::absolute(path, ec);
+  return ec ? path : p.lexically_normal().string();
+}
+
 }  // namespace vvi

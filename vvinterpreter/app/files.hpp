@@ -17,5 +17,7 @@ bool write_file(const std::string& path, const std::string& text);
 std::string executable_dir();
 //! $VV_CACHE_DIR, or $XDG_CACHE_HOME/vv, or ~/.cache/vv.
 std::string default_cache_dir();
+//! The path made absolute and normal (no "." or ".."); as given if that fails.
+std::string absolute_path(const std::string& path);
 
 }  // namespace vvi

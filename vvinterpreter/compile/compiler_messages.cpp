@@ -14,6 +14,7 @@
 
 #include "app/files.hpp"
 #include "compile/property_messages.hpp"
+#include "compile/text_ends.hpp"
 #include "source.hpp"
 
 namespace vvi {
@@ -127,10 +128,6 @@ class vvp_files {
  private:
   std::map<std::string, std::vector<std::string>> lines_;
 };
-
-bool ends_with(const std::string& s, const std::string& tail) {
-  return s.size() >= tail.size() && s.compare(s.size() - tail.size(), tail.size(), tail) == 0;
-}
 
 // "  12 | code" and "     |   ^~~~": the compiler's excerpt of a line.
 bool is_excerpt(const std::string& l) {

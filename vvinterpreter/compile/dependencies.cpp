@@ -4,16 +4,9 @@
 
 #include "app/files.hpp"
 #include "compile/hashing.hpp"
+#include "compile/text_ends.hpp"
 
 namespace vvi {
-
-namespace {
-
-bool ends_with(const std::string& s, const std::string& tail) {
-  return s.size() >= tail.size() && s.compare(s.size() - tail.size(), tail.size(), tail) == 0;
-}
-
-}  // namespace
 
 std::string dependency_list(const std::string& depfile, const std::string& include) {
   std::string text = read_file(depfile).value_or("");

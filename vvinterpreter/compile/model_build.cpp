@@ -77,12 +77,6 @@ std::string headers_stamp(const std::string& include) {
   return h.hex();
 }
 
-std::string join(const std::vector<std::string>& argv) {
-  std::string s;
-  for (const std::string& a : argv) s += (s.empty() ? "" : " ") + a;
-  return s;
-}
-
 }  // namespace
 
 std::string vvlib_include_dir() {
@@ -202,7 +196,7 @@ void model_builder::name_the_build() {
   key = content_hash()
             .add(vvc::version())
             .add(config::cxx_compiler)
-            .add(join(flags))
+            .add(command_line(flags))
             .add(config::model_link_flags)
             .add(stamp)
             .add(model_dir)
@@ -243,7 +237,7 @@ std::optional<build_result> model_builder::prepare_work() {
   if (s.compiling) s.compiling();
   t1 = std::chrono::steady_clock::now();
   header = header_request{s.cache_dir, include, flags,
-                          content_hash().add(config::cxx_compiler).add(join(flags)).add(stamp).hex()};
+                          content_hash().add(config::cxx_compiler).add(command_line(flags)).add(stamp).hex()};
   pch = precompiled_header_dir(header, damage, header_error);
   if (!damage.empty())
     notes += path + ": note: the cached precompiled vvlib header was damaged (" + damage + "); it was built again\n";
@@ -278,7 +272,7 @@ build_result model_builder::compile_and_store() {
     job.declarations_key = content_hash()
                                .add(vvc::version())
                                .add(config::cxx_compiler)
-                               .add(join(flags))
+                               .add(command_line(flags))
                                .add(stamp)
                                .add(model_dir)
                                .add(t.declarations)

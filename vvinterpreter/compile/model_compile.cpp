@@ -10,12 +10,6 @@ namespace vvi {
 
 namespace {
 
-std::string join(const std::vector<std::string>& argv) {
-  std::string s;
-  for (const std::string& a : argv) s += (s.empty() ? "" : " ") + a;
-  return s;
-}
-
 std::vector<std::string> operator+(std::vector<std::string> a, const std::vector<std::string>& b) {
   a.insert(a.end(), b.begin(), b.end());
   return a;
@@ -60,7 +54,7 @@ class compilation {
   std::vector<std::string> apart() const { return j_.compiler + std::vector<std::string>{"-DVV_DECLARATIONS_APART"}; }
 
   process_result run(const std::vector<std::string>& argv) {
-    out_.commands += join(argv) + "\n";
+    out_.commands += command_line(argv) + "\n";
     return run_process(argv);
   }
 

@@ -53,4 +53,10 @@ process_result run_process(const std::vector<std::string>& argv) {
   return r;
 }
 
+std::string command_line(const std::vector<std::string>& argv) {
+  std::string s;
+  for (const std::string& a : argv) s += (s.empty() ? "" : " ") + a;
+  return s;
+}
+
 }  // namespace vvi

@@ -13,4 +13,8 @@ struct process_result {
 
 process_result run_process(const std::vector<std::string>& argv);
 
+//! The words of a command joined by spaces, as a build's `command` file and
+//! the cache's keys record it.
+std::string command_line(const std::vector<std::string>& argv);
+
 }  // namespace vvi

@@ -1,14 +1,9 @@
 #include "compile/property_messages.hpp"
+#include "compile/text_ends.hpp"
 
 namespace vvi {
 
 namespace {
-
-bool starts_with(const std::string& s, const std::string& head) { return s.rfind(head, 0) == 0; }
-
-bool ends_with(const std::string& s, const std::string& tail) {
-  return s.size() >= tail.size() && s.compare(s.size() - tail.size(), tail.size(), tail) == 0;
-}
 
 // The text between `open` (found from `from`) and the next `close`; "" when
 // either is missing.

@@ -21,7 +21,7 @@ namespace fs = std::filesystem;
 
 namespace {
 
-int refuse(const std::string& why) {
+int merge_refused(const std::string& why) {
   std::fprintf(stderr, "vvinterpreter: %s\n", why.c_str());
   return 1;
 }
@@ -82,12 +82,12 @@ int run_merge(const options& o) {
   const std::vector<std::string>& dirs = o.sweep.merge;
   const std::string& out = o.sweep.out;
   std::string why, text = identity_in(dirs[0], why);
-  if (text.empty()) return refuse("--merge " + why);
+  if (text.empty()) return merge_refused("--merge " + why);
   for (std::size_t i = 1; i < dirs.size(); ++i) {
     std::string other = identity_in(dirs[i], why);
-    if (other.empty()) return refuse("--merge " + why);
+    if (other.empty()) return merge_refused("--merge " + why);
     if (other != text)
-      return refuse("--merge: " + dirs[i] + " holds another sweep than " + dirs[0] + " (" + identity_file + ": " +
+      return merge_refused("--merge: " + dirs[i] + " holds another sweep than " + dirs[0] + " (" + identity_file + ": " +
                     first_difference(text, other) + "); only the shards of one sweep can be merged");
   }
   std::string bad;
@@ -101,9 +101,9 @@ int run_merge(const options& o) {
     if (canonical(d) == dest) continue;
     bool twice = false;
     for (const std::string& s : sources) twice = twice || canonical(s) == canonical(d);
-    if (twice) return refuse("--merge: " + d + " is named twice");
+    if (twice) return merge_refused("--merge: " + d + " is named twice");
     locks.push_back(std::make_unique<sweep_folder>(d, text));
-    if (!locks.back()->error().empty()) return refuse("--merge: " + locks.back()->error());
+    if (!locks.back()->error().empty()) return merge_refused("--merge: " + locks.back()->error());
     sources.push_back(d);
   }
   // Each run in exactly one folder (or already in the target).
@@ -120,23 +120,23 @@ int run_merge(const options& o) {
       missing.push_back(what + " is finished or failed in none of the folders");
   }
   if (!twice.empty())
-    return refuse("--merge: " + std::to_string(twice.size()) + " runs are in more than one folder (merge each shard once):" +
+    return merge_refused("--merge: " + std::to_string(twice.size()) + " runs are in more than one folder (merge each shard once):" +
                   listed(twice));
   if (!missing.empty())
-    return refuse("--merge: " + std::to_string(missing.size()) + " of " + std::to_string(plan.size()) +
+    return merge_refused("--merge: " + std::to_string(missing.size()) + " of " + std::to_string(plan.size()) +
                   " runs are missing (run their shards again, or to the end):" + listed(missing));
 
   sweep_folder target(out, text);
-  if (!target.error().empty()) return refuse("--merge --out " + target.error());
+  if (!target.error().empty()) return merge_refused("--merge --out " + target.error());
   for (const auto& [n, from] : copies)
-    if (std::string e = bring_in(from + "/" + plan.folder(n), out + "/" + plan.folder(n)); !e.empty()) return refuse(e);
+    if (std::string e = bring_in(from + "/" + plan.folder(n), out + "/" + plan.folder(n)); !e.empty()) return merge_refused(e);
   std::optional<sweep_identity> id = parse_identity(text, bad);
   try {
     std::string e = write_in_folder(out, "runs.csv", runs_csv(plan, out, id->plots));
     if (e.empty()) e = write_in_folder(out, "failed.csv", failed_csv(plan, out));
-    if (!e.empty()) return refuse(e);
+    if (!e.empty()) return merge_refused(e);
   } catch (const std::exception& e) {
-    return refuse(e.what());
+    return merge_refused(e.what());
   }
   if (!o.quiet)
     std::printf("merged %zu runs from %zu folders into %s\n", copies.size(), sources.size(), out.c_str());

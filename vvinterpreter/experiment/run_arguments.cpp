@@ -2,6 +2,8 @@
 
 #include <filesystem>
 
+#include "app/files.hpp"
+
 namespace vvi {
 
 namespace {
@@ -17,19 +19,13 @@ const dropped dropped_options[] = {
     {"--rebuild", false},  // the sweep compiled the model; the runs find it in the cache
 };
 
-std::string absolute(const std::string& path) {
-  std::error_code ec;
-  std::filesystem::path p = std::filesystem::absolute(path, ec);
-  return ec ? path : p.lexically_normal().string();
-}
-
 }  // namespace
 
 run_arguments arguments_of_runs(int argc, const char* const* argv, const std::string& model, const std::string& cache,
                                 const std::string& plots) {
   run_arguments a;
-  a.model = absolute(model);
-  a.cache = absolute(cache);
+  a.model = absolute_path(model);
+  a.cache = absolute_path(cache);
   a.plots_given = !plots.empty();
   a.plots = plots.empty() ? "plots.csv" : plots;
   bool model_seen = false;

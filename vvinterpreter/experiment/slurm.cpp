@@ -7,6 +7,7 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include "app/files.hpp"
 #include "experiment/child_process.hpp"
 #include "experiment/sweep_folder.hpp"
 
@@ -15,12 +16,6 @@ namespace vvi {
 namespace fs = std::filesystem;
 
 namespace {
-
-std::string absolute(const std::string& p) {
-  std::error_code ec;
-  fs::path a = fs::absolute(p, ec);
-  return ec ? p : a.lexically_normal().string();
-}
 
 std::string job_name(const slurm_job& j) {
   std::string stem = fs::path(j.model).stem().string();
@@ -36,7 +31,7 @@ std::string words(const std::vector<std::string>& ws) {
 }
 
 // The shard's folder: DIR/shards/I.
-std::string shard_folder(const slurm_job& j, const std::string& i) { return absolute(j.sweep.out) + "/shards/" + i; }
+std::string shard_folder(const slurm_job& j, const std::string& i) { return absolute_path(j.sweep.out) + "/shards/" + i; }
 
 // sbatch on the PATH, or "".
 std::string find_sbatch() {
@@ -78,7 +73,7 @@ std::string array_script(const slurm_job& j) {
   else cmd.insert(cmd.end(), {"--seed", std::to_string(j.seed)});
   cmd.insert(cmd.end(), {"--jobs", std::to_string(jobs), "--cache", j.args.cache});
   cmd.insert(cmd.end(), j.args.batch_options.begin(), j.args.batch_options.end());
-  std::string out = absolute(j.sweep.out);
+  std::string out = absolute_path(j.sweep.out);
   return "#!/bin/sh\n"
          "# A vv sweep as a Slurm job array, one task per shard (written by vvinterpreter --slurm).\n"
          "# The merge job (merge.sbatch) joins the shards into " + out + " when all have ended.\n"
@@ -92,7 +87,7 @@ std::string array_script(const slurm_job& j) {
 }
 
 std::string merge_script(const slurm_job& j) {
-  std::string out = absolute(j.sweep.out);
+  std::string out = absolute_path(j.sweep.out);
   std::vector<std::string> cmd = {j.self, "--merge"};
   for (unsigned i = 1; i <= j.sweep.slurm; ++i) cmd.push_back(shard_folder(j, std::to_string(i)));
   cmd.insert(cmd.end(), {"--out", out});
@@ -114,7 +109,7 @@ int submit_to_slurm(const slurm_job& j, bool quiet) {
     std::fprintf(stderr, "vvinterpreter: %s\n", e.c_str());
     return 1;
   }
-  std::string array = absolute(dir + "/sweep.sbatch"), merge = absolute(dir + "/merge.sbatch");
+  std::string array = absolute_path(dir + "/sweep.sbatch"), merge = absolute_path(dir + "/merge.sbatch");
   std::string sbatch = find_sbatch();
   if (sbatch.empty()) {
     std::printf("%s", array_script(j).c_str());
@@ -139,7 +134,7 @@ int submit_to_slurm(const slurm_job& j, bool quiet) {
   }
   if (!quiet)
     std::printf("submitted job array %s (%u shards) and merge job %s; the tables will be in %s\n", id.c_str(),
-                j.sweep.slurm, merge_id.c_str(), absolute(j.sweep.out).c_str());
+                j.sweep.slurm, merge_id.c_str(), absolute_path(j.sweep.out).c_str());
   return 0;
 }
 

@@ -9,7 +9,7 @@ namespace vvi {
 
 namespace {
 
-[[noreturn]] void refuse(const std::string& why) { throw CLI::ValidationError(why); }
+[[noreturn]] void invalid_value(const std::string& why) { throw CLI::ValidationError(why); }
 
 bool whole_number(const std::string& s, unsigned long& out) {
   if (s.empty() || s.size() > 9 || s.find_first_not_of("0123456789") != std::string::npos) return false;
@@ -19,7 +19,7 @@ bool whole_number(const std::string& s, unsigned long& out) {
 
 unsigned count_of(const std::string& v, unsigned long lo, unsigned long hi, const std::string& need) {
   unsigned long n = 0;
-  if (!whole_number(v, n) || n < lo || n > hi) refuse(need);
+  if (!whole_number(v, n) || n < lo || n > hi) invalid_value(need);
   return static_cast<unsigned>(n);
 }
 
@@ -43,11 +43,11 @@ void read_shard(const std::string& v, sweep_options& s) {
   std::size_t slash = v.find('/');
   unsigned long i = 0, n = 0;
   if (slash == std::string::npos || !whole_number(v.substr(0, slash), i) || !whole_number(v.substr(slash + 1), n))
-    refuse("--shard needs I/N, e.g. --shard 2/8 (the second of 8 shards)" +
+    invalid_value("--shard needs I/N, e.g. --shard 2/8 (the second of 8 shards)" +
            std::string(v.empty() ? "" : "; \"" + v + "\" is not"));
-  if (n == 0) refuse("--shard " + v + ": the number of shards must be 1 or more");
+  if (n == 0) invalid_value("--shard " + v + ": the number of shards must be 1 or more");
   if (i < 1 || i > n)
-    refuse("--shard " + v + ": shard " + std::to_string(i) + " is out of range: shards are numbered 1 to " +
+    invalid_value("--shard " + v + ": shard " + std::to_string(i) + " is out of range: shards are numbered 1 to " +
            std::to_string(n));
   s.shard = static_cast<unsigned>(i);
   s.shards = static_cast<unsigned>(n);
@@ -60,7 +60,7 @@ void add_sweep_options(CLI::App& app, sweep_options& s) {
              "run the model for each value of the parameter NAME, or NAME=LO:HI:COUNT for COUNT values from LO "
              "to HI; repeatable (every combination runs)",
              [&s](const std::string& v) {
-               if (v.empty()) refuse("--sweep needs NAME=V1,V2,... or NAME=LO:HI:COUNT, e.g. --sweep rate=0.1,0.2");
+               if (v.empty()) invalid_value("--sweep needs NAME=V1,V2,... or NAME=LO:HI:COUNT, e.g. --sweep rate=0.1,0.2");
                s.sweeps.push_back(v);  // read in full by the sweep's plan, which names what is wrong
              });
   with_value(app, "--seeds", "K", "run each combination with the seeds 1 to K", [&s](const std::string& v) {
@@ -72,7 +72,7 @@ void add_sweep_options(CLI::App& app, sweep_options& s) {
              });
   with_value(app, "--out", "DIR", "the sweep's folder: run-NNNN/ per run, runs.csv, failed.csv",
              [&s](const std::string& v) {
-               if (v.empty()) refuse("--out needs a folder");
+               if (v.empty()) invalid_value("--out needs a folder");
                s.out = v;
              });
   with_value(app, "--shard", "I/N", "run only every N-th run from run I (a cluster's job array)",
@@ -85,9 +85,9 @@ void add_sweep_options(CLI::App& app, sweep_options& s) {
   app.add_option_function<std::vector<std::string>>(
          "--merge",
          [&s](const std::vector<std::string>& dirs) {
-           if (dirs.empty()) refuse("--merge needs the folders of the shards to merge, e.g. --merge a b --out all");
+           if (dirs.empty()) invalid_value("--merge needs the folders of the shards to merge, e.g. --merge a b --out all");
            for (const std::string& d : dirs) {
-             if (d.empty()) refuse("--merge needs the folders of the shards to merge, e.g. --merge a b --out all");
+             if (d.empty()) invalid_value("--merge needs the folders of the shards to merge, e.g. --merge a b --out all");
              s.merge.push_back(d);
            }
          },
