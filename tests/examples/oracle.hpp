@@ -79,48 +79,65 @@ inline std::string input_vvm(const std::string& name, const std::string& mesh_fi
   return out;
 }
 
-//! The example's copy that reads its input from the file that the
-//! environment variable VV_ORACLE_INPUT names (the argument of its first
-//! readXMLFile call is replaced). Its text and folder are the same for every
-//! test and input, so the interpreter's cache compiles it once for all the
-//! cross-checks (each test process has a scratch folder of its own, and a
-//! copy there was compiled again by every test). Written whole or not at
-//! all: tests running at once may write it together.
-inline std::string example_reading(const std::string& example) {
-  const std::string stem = std::filesystem::path(example).stem().string();
-  std::string text = test_files::slurp(std::string(VV_SOURCE_DIR) + "/" + example);
-  std::regex first_read(R"(readXMLFile\(\s*"[^"]*"\s*\))");
+//! An example as the cross-checks run it: its copy that reads its input
+//! from the file the environment variable VV_ORACLE_INPUT names (the
+//! argument of its first readXMLFile call is replaced), and the file it read
+//! itself (absolute). Its text and folder are the same for every test and
+//! input, so the interpreter's cache compiles it once for all the
+//! cross-checks, whatever they feed it (each test process has a scratch
+//! folder of its own, and a copy there was compiled again by every test).
+//! Written whole or not at all: tests running at once may write it
+//! together (a model a test wrote is copied into the test's scratch
+//! folder). An example that reads no file is run as it is (own_input
+//! empty).
+struct runnable_example {
+  std::string model, own_input;
+};
+inline runnable_example example_reading(const std::string& example) {
+  const std::string source = example.front() == '/' ? example : std::string(VV_SOURCE_DIR) + "/" + example;
+  std::string text = test_files::slurp(source);
+  std::regex first_read(R"re(readXMLFile\(\s*"([^"]*)"\s*\))re");
   std::smatch m;
-  EXPECT_TRUE(std::regex_search(text, m, first_read)) << example << " has no readXMLFile(\"...\")";
+  if (!std::regex_search(text, m, first_read)) return {source, ""};
+  std::filesystem::path own = m[1].str();
+  if (own.is_relative()) own = std::filesystem::path(source).parent_path() / own;
   text = "#include <cstdlib>\n" + m.prefix().str() + "readXMLFile(std::getenv(\"VV_ORACLE_INPUT\"))" +
          m.suffix().str();
-  const std::string folder = VV_ORACLE_MODELS;
+  // A model a test wrote (an absolute path) has a copy of the test's own.
+  const std::string folder = example.front() == '/' ? test_files::scratch_dir() : std::string(VV_ORACLE_MODELS);
   std::filesystem::create_directories(folder);
+  const std::string stem = std::filesystem::path(example).stem().string();
   const std::string out = folder + "/" + stem + "_reading_its_input.vvp";
   if (!std::filesystem::exists(out) || test_files::slurp(out) != text) {
     const std::string temporary = out + ".tmp-" + std::to_string(getpid());
     std::ofstream(temporary, std::ios::binary) << text;
     std::filesystem::rename(temporary, out);
   }
-  return out;
+  return {out, own.lexically_normal().string()};
+}
+
+//! Where run_example(example, input, steps) writes its export.
+inline std::string export_of(const std::string& example, unsigned steps) {
+  return test_files::scratch_dir() + std::filesystem::path(example).stem().string() + "_" + std::to_string(steps) +
+         ".vvm";
 }
 
 //! Runs an example (a .vvp path relative to the source tree, or absolute)
-//! on `input` (a mesh file; empty: its own model) for `steps` steps and
-//! gives the exported mesh; extra arguments go to the interpreter.
+//! on `input` (a .vvm; empty: the file it reads itself) for `steps` steps
+//! and gives the exported mesh; extra arguments go to the interpreter.
 inline polygons run_example(const std::string& example, const std::string& input, unsigned steps,
                             const std::vector<std::string>& extra = {}) {
-  std::string model = example.front() == '/' ? example : std::string(VV_SOURCE_DIR) + "/" + example;
-  if (!input.empty()) model = example_reading(example);
-  std::string out = test_files::scratch_dir() + std::filesystem::path(model).stem().string() + "_" +
-                    std::to_string(steps) + ".vvm";
+  runnable_example run = example_reading(example);
+  const std::string out = export_of(example, steps);
   std::vector<std::string> args = {"--batch", "--quiet", "--steps", std::to_string(steps), "--export", out};
   args.insert(args.end(), extra.begin(), extra.end());
-  args.push_back(model);
-  if (!input.empty()) setenv("VV_ORACLE_INPUT", std::filesystem::absolute(input).c_str(), 1);
+  args.push_back(run.model);
+  EXPECT_TRUE(input.empty() || !run.own_input.empty()) << example << " reads no file: it cannot be given " << input;
+  const std::string read = input.empty() ? run.own_input : std::filesystem::absolute(input).string();
+  if (!read.empty()) setenv("VV_ORACLE_INPUT", read.c_str(), 1);
   test_run::result r = test_run::run(test_run::interpreter(args), 600);
   unsetenv("VV_ORACLE_INPUT");
-  EXPECT_EQ(r.status, 0) << model << ": " << r.err;
+  EXPECT_EQ(r.status, 0) << run.model << ": " << r.err;
   if (r.status != 0) return {};
   return read_polygons(out);
 }

@@ -214,10 +214,7 @@ using oracle::model;
 //! Runs an example and reads its export with all fields.
 plain run_plain(const std::string& example, const std::string& input, unsigned steps) {
   oracle::run_example(example, input, steps);
-  std::string model_path = input.empty() ? example : oracle::example_reading(example);
-  std::string out = test_files::scratch_dir() + std::filesystem::path(model_path).stem().string() + "_" +
-                    std::to_string(steps) + ".vvm";
-  return read_plain(out);
+  return read_plain(oracle::export_of(example, steps));
 }
 
 //! Every point of `some` is (within tol) one of `all`.
@@ -497,11 +494,7 @@ void check_adaptive(const std::string& input, unsigned max_steps) {
     {
       graph::context ctx;
       graph::mesh m(ctx);
-      std::string out = test_files::scratch_dir() +
-                        std::filesystem::path(input.empty() ? example : oracle::example_reading(example))
-                            .stem()
-                            .string() +
-                        "_" + std::to_string(steps) + ".vvm";
+      std::string out = oracle::export_of(example, steps);
       vv::read_vvm(m, out);
       EXPECT_NO_THROW(vv::check_invariants(m, {true, true}));
       vv::orbit_set orbits = vv::orbits(m);
