@@ -9,6 +9,7 @@
 #include <sstream>
 
 #include "compile/process.hpp"
+#include "compile/text_ends.hpp"
 #include "runner/report_words.hpp"
 
 namespace vvi {
@@ -29,8 +30,7 @@ std::vector<mapping> parse_maps(const std::vector<std::string>& lines) {
     if (!(in >> range >> perms >> offset >> dev >> inode)) continue;
     std::getline(in >> std::ws, m.path);
     const std::string deleted = " (deleted)";
-    if (m.path.size() > deleted.size() && m.path.compare(m.path.size() - deleted.size(), deleted.size(), deleted) == 0)
-      m.path.erase(m.path.size() - deleted.size());
+    if (ends_with(m.path, deleted)) m.path.erase(m.path.size() - deleted.size());
     std::size_t dash = range.find('-');
     if (dash == std::string::npos) continue;
     m.start = std::strtoull(range.substr(0, dash).c_str(), nullptr, 16);
