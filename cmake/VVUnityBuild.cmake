@@ -13,3 +13,15 @@ function(vv_unity_build target)
     set_target_properties(${target} PROPERTIES UNITY_BUILD ON UNITY_BUILD_BATCH_SIZE 16)
   endif()
 endfunction()
+
+# Test programs of several files, likewise: their files' local helpers
+# have names of their own, so that the files can be combined. Their
+# fixtures live in unnamed namespaces, which GCC warns about once a file is
+# included into another (-Wsubobject-linkage): harmless here, each unity
+# source being one translation unit.
+function(vv_unity_test_build target)
+  if(VV_UNITY_BUILD)
+    set_target_properties(${target} PROPERTIES UNITY_BUILD ON UNITY_BUILD_BATCH_SIZE 16)
+    target_compile_options(${target} PRIVATE -Wno-subobject-linkage)
+  endif()
+endfunction()

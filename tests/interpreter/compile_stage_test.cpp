@@ -18,6 +18,7 @@
 #include "compile/model_cache.hpp"
 #include "compile/model_path.hpp"
 #include "compile/property_messages.hpp"
+#include "compile/shared_declarations.hpp"
 #include "test_files.hpp"
 
 namespace fs = std::filesystem;
@@ -269,3 +270,41 @@ TEST(ModelCachePublish, SwitchesTheKeyAndReplacesAnOldLayoutFolder) {
 }
 
 }  // namespace
+
+// ---- declarations' parts shared across folders (compile/shared_declarations) ----
+
+TEST(SharedDeclarations, OnlyTheLineNamesInsideTheModelsFolderAreMarked) {
+  const std::string text =
+      "#line 1 \"<vvc generated>\"\n"
+      "#line 1 \"/w/a/m.vvp\"\n"
+      "#line 4 \"/w/a/parts/p.vvp\"\n"
+      "#line 9 \"/w/ab/m.vvp\"\n"
+      "const char* here = \"/w/a/m.vvp\";\n";
+  EXPECT_EQ(vvi::declarations_without_folder(text, "/w/a"),
+            "#line 1 \"<vvc generated>\"\n"
+            "#line 1 \"/vv-model-folder/m.vvp\"\n"
+            "#line 4 \"/vv-model-folder/parts/p.vvp\"\n"
+            "#line 9 \"/w/ab/m.vvp\"\n"
+            "const char* here = \"/w/a/m.vvp\";\n");
+  EXPECT_EQ(vvi::in_model_folder("/vv-model-folder/parts/p.vvp", "/w/b"), "/w/b/parts/p.vvp");
+  EXPECT_EQ(vvi::in_model_folder("/w/a/m.vvp", "/w/b"), "/w/a/m.vvp");
+  EXPECT_EQ(vvi::in_model_folder("/vv-model-folder/m.vvp", ""), "/vv-model-folder/m.vvp");
+}
+
+TEST(SharedDeclarations, AHeaderTheDeclarationsCouldFindInTheFolderMakesThePartTheFolders) {
+  namespace fs = std::filesystem;
+  const std::string dir = test_files::scratch_dir() + "shared_declarations";
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  const std::string text = "#include <cstdio>\n  #  include \"shapes.hpp\"\nvertex_props {};\n";
+  EXPECT_FALSE(vvi::declarations_may_read_folder(text, dir));
+  std::ofstream(dir + "/cstdio") << "";
+  EXPECT_TRUE(vvi::declarations_may_read_folder(text, dir));
+  fs::remove(dir + "/cstdio");
+  std::ofstream(dir + "/shapes.hpp") << "";
+  EXPECT_TRUE(vvi::declarations_may_read_folder(text, dir));
+  fs::remove(dir + "/shapes.hpp");
+  // vvlib's own headers are looked for in the model's folder first too.
+  fs::create_directories(dir + "/util");
+  EXPECT_TRUE(vvi::declarations_may_read_folder(text, dir));
+}

@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "cache_harness.hpp"
 #include "run_interpreter.hpp"
 #include "test_files.hpp"
 
@@ -17,28 +18,6 @@ using test_files::scratch_dir;
 namespace fs = std::filesystem;
 
 namespace {
-
-std::string fresh_dir(const std::string& name) {
-  std::string d = scratch_dir() + name;
-  fs::remove_all(d);
-  fs::create_directories(d);
-  return fs::canonical(d).string() + "/";
-}
-
-void write(const std::string& path, const std::string& text) {
-  std::ofstream out(path, std::ios::binary);
-  out << text;
-  ASSERT_TRUE(out.good()) << path;
-}
-
-bool contains(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
-
-std::string report(const test_run::result& r) {
-  return "status " + std::to_string(r.status) + (r.timed_out ? " (timed out)" : "") + "\n--- stdout:\n" + r.out +
-         "--- stderr:\n" + r.err;
-}
-
-test_run::result run(const std::vector<std::string>& args) { return test_run::run(test_run::interpreter(args), 280); }
 
 // A #line beyond INT_MAX is legal C++; g++ counts it wrapped and prints a
 // negative line. The host shows that message as g++ wrote it (there is no

@@ -185,10 +185,6 @@ TEST(ViewerInteraction, PickSetAndSaveParameters) {
   EXPECT_EQ(slurp(model), saved);
 }
 
-// The panel's widest extent (Dear ImGui's window, at most 520 pixels wide
-// and 10 from the window's left edge).
-constexpr int panel_right_limit = 530;
-
 // The last row of the panel: its left padding column is the panel's dark
 // background from the title bar down to its bottom edge.
 int panel_bottom(const image& im) {

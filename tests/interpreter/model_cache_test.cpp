@@ -20,6 +20,7 @@
 #include <string>
 #include <vector>
 
+#include "cache_harness.hpp"
 #include "run_interpreter.hpp"
 #include "test_files.hpp"
 
@@ -28,34 +29,6 @@ using test_files::scratch_dir;
 namespace fs = std::filesystem;
 
 namespace {
-
-std::string fresh_dir(const std::string& name) {
-  std::string d = scratch_dir() + name;
-  fs::remove_all(d);
-  fs::create_directories(d);
-  return fs::canonical(d).string() + "/";
-}
-
-void write(const std::string& path, const std::string& text) {
-  std::ofstream out(path, std::ios::binary);
-  out << text;
-  ASSERT_TRUE(out.good()) << path;
-}
-
-bool contains(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
-
-std::string report(const test_run::result& r) {
-  return "status " + std::to_string(r.status) + "\n--- stdout:\n" + r.out + "--- stderr:\n" + r.err;
-}
-
-//! vvinterpreter with `cache` and these arguments, in the folder `cwd`.
-test_run::result run_in(const std::string& cwd, const std::string& cache, const std::vector<std::string>& args) {
-  std::vector<std::string> argv = {"env", "-C", cwd, VV_INTERPRETER, "--cache", cache};
-  argv.insert(argv.end(), args.begin(), args.end());
-  return test_run::run(argv, 280);
-}
-
-test_run::result run(const std::vector<std::string>& args) { return run_in(".", VV_TEST_CACHE, args); }
 
 //! The plugin path --compile-only prints (its last line of output).
 std::string plugin_of(const test_run::result& r) {
@@ -418,6 +391,49 @@ TEST(ModelCacheDeclarations, DeclarationsThatDoNotCompileApartAreCompiledWithThe
   std::string command = command_of(edited);
   EXPECT_EQ(std::count(command.begin(), command.end(), '\n'), 1) << command;
   EXPECT_FALSE(contains(command, apart_flag)) << command;
+}
+
+// The same program in two folders shares one part (its #line names hold
+// the model's folder as a marker), and a crash in the part's code is
+// reported at each folder's own file and line. A folder holding a header
+// the declarations include gets a part of its own.
+TEST(ModelCacheDeclarations, OneProgramInTwoFoldersSharesItsPartAndCrashesNameEachFolder) {
+  const std::string dir = fresh_dir("apart_folders");
+  write(dir + "seed.vvp", "start {}\n");
+  const std::string cache = cache_with_header(dir);
+  // The properties' initialiser traps once a vertex is made; the code that
+  // makes vertices is the part's (vv::context is instantiated there).
+  const std::string program =
+      "#include <cstdio>\n"
+      "inline double made(int n) { if (n > 2) __builtin_trap(); return n; }\n"
+      "vertex { double h = made(3); };\n"
+      "mesh S;\n"
+      "start { std::printf(\"started\\n\"); vertex v; add v to S; }\n";
+  std::vector<std::string> reports;
+  for (const char* folder : {"a", "b"}) {
+    fs::create_directories(dir + folder);
+    const std::string model = dir + folder + "/m.vvp";
+    write(model, program);
+    test_run::result ran = run_in(dir, cache, {"--batch", "--steps", "0", model});
+    EXPECT_NE(ran.status, 0) << report(ran);
+    // The mesh's initialiser makes the first vertices; paths as the user
+    // typed them, relative to the working folder.
+    EXPECT_TRUE(contains(ran.err, std::string(folder) + "/m.vvp:2: crashed with SIGILL")) << report(ran);
+    EXPECT_TRUE(contains(ran.err, "  " + std::string(folder) + "/m.vvp:2 in made(int)\n")) << report(ran);
+    EXPECT_FALSE(contains(ran.err, "vv-model-folder")) << report(ran);
+  }
+  ASSERT_EQ(parts_in(cache).size(), 1u);
+
+  // <vector> found beside the model: the compiler would read that one.
+  fs::create_directories(dir + "c");
+  write(dir + "c/m.vvp", "#include <vector>\n" + program);
+  write(dir + "c/vector", "#include_next <vector>\n");
+  write(dir + "b/m.vvp", "#include <vector>\n" + program);
+  for (const char* folder : {"b", "c"}) {
+    test_run::result compiled = run_in(dir, cache, {"--compile-only", dir + folder + "/m.vvp"});
+    EXPECT_EQ(compiled.status, 0) << report(compiled);
+  }
+  EXPECT_EQ(parts_in(cache).size(), 3u);
 }
 
 // A damaged part is found out before it is linked: compiled again, with

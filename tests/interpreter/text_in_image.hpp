@@ -16,6 +16,10 @@
 
 namespace viewer_harness {
 
+//! The panel's area of a window screenshot (Dear ImGui's window, at most
+//! 520 pixels wide and 10 from the window's left edge).
+constexpr int panel_right_limit = 530;
+
 //! A line of text as the font draws it: which pixels are ink.
 struct text_mask {
   int width = 0, height = 0;

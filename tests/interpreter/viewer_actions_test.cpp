@@ -10,15 +10,6 @@ namespace {
 
 const std::string lifts = VV_TESTS_DIR "/state_models/lifts.vvp";
 
-// The panel's area of a window screenshot (it is at most 520 pixels wide).
-constexpr int panel_right_limit = 530;
-
-int count_of(const std::string& text, const std::string& part) {
-  int n = 0;
-  for (std::size_t at = text.find(part); at != std::string::npos; at = text.find(part, at + 1)) ++n;
-  return n;
-}
-
 TEST(ViewerActions, ThePanelHasAButtonPerActionAndTheScriptRunsThemAndAReloadReplaysThem) {
   std::string d = fresh_dir("actions_panel");
   const std::string shot = d + "window.png";

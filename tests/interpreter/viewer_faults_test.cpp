@@ -10,13 +10,6 @@ namespace {
 
 const std::string fault_models = VV_TESTS_DIR "/fault_models/";
 
-//! How often `part` occurs in text.
-int count_of(const std::string& text, const std::string& part) {
-  int n = 0;
-  for (std::size_t at = text.find(part); at != std::string::npos; at = text.find(part, at + 1)) ++n;
-  return n;
-}
-
 // Regression (defect 2): a comment-only edit gives the same plugin file;
 // it was dlopen()ed while the old model was still loaded, so the handle
 // was shared and the globals were not initialised again (the counter went

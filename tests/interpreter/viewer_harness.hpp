@@ -224,6 +224,13 @@ inline std::string report(const test_run::result& r) {
 
 inline bool has(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
 
+//! How many times part occurs in text (overlapping occurrences count).
+inline int count_of(const std::string& text, const std::string& part) {
+  int n = 0;
+  for (std::size_t at = text.find(part); at != std::string::npos; at = text.find(part, at + 1)) ++n;
+  return n;
+}
+
 //! The lines of stderr that are the viewer's own messages.
 inline std::vector<std::string> viewer_errors(const std::string& err) {
   std::vector<std::string> lines;

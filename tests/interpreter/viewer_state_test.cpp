@@ -12,15 +12,6 @@ namespace {
 const std::string state_models = VV_TESTS_DIR "/state_models/";
 const std::string fault_models = VV_TESTS_DIR "/fault_models/";
 
-int count_of(const std::string& text, const std::string& part) {
-  int n = 0;
-  for (std::size_t at = text.find(part); at != std::string::npos; at = text.find(part, at + 1)) ++n;
-  return n;
-}
-
-// The panel's area of a window screenshot (it is at most 520 pixels wide).
-constexpr int panel_right_limit = 530;
-
 // The panel's orange "running for" line.
 bool is_orange(const unsigned char* p) { return p[0] > 150 && p[1] > 70 && p[2] < 60; }
 

@@ -21,7 +21,7 @@ void expect_point(const Pt& p, double x, double y, double z = 0) {
   EXPECT_NEAR(p.z(), z, 1e-15);
 }
 
-std::string read_error(const std::string& path) {
+std::string contour_read_error(const std::string& path) {
   try {
     Contour c(path);
   } catch (const vv::error& e) {
@@ -134,14 +134,14 @@ TEST(UtilContour, EmptyContour) {
   EXPECT_TRUE(c.points().empty());
 }
 
-struct bad_file {
+struct bad_contour_file {
   const char* name;
   std::string text;
   std::string message;
 };
 
 TEST(UtilContour, FileErrorsNameFileAndLine) {
-  const std::vector<bad_file> cases = {
+  const std::vector<bad_contour_file> cases = {
       {"empty.con", "\n\n",
        ":2: the file ends where a contour ('cver 1 1', 'version: 1.4' or 'COUNT DIMENSION closed|open') was "
        "expected"},
@@ -184,9 +184,9 @@ TEST(UtilContour, FileErrorsNameFileAndLine) {
        "range: 0.0 1.0\ndimension: 4\ntype: bezier\n",
        ":10: type: must be 'bspline', found 'bezier'"},
   };
-  for (const bad_file& c : cases) {
+  for (const bad_contour_file& c : cases) {
     const std::string path = write_scratch(c.name, c.text);
-    EXPECT_EQ(read_error(path), path + c.message) << c.name;
+    EXPECT_EQ(contour_read_error(path), path + c.message) << c.name;
   }
 }
 

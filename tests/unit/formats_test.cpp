@@ -33,6 +33,7 @@
 
 #include <unistd.h>
 
+#include "positions_graph.hpp"
 #include "test_files.hpp"
 
 #ifndef VV_SOURCE_DIR
@@ -46,14 +47,7 @@ namespace {
 
 using Pt = util::Point<double>;
 
-struct VP {
-  Pt pos;
-  template <class F>
-  void vv_fields(F&& f) {
-    f("pos", pos);
-  }
-};
-using G = vv::graph<VP>;
+using G = positions_graph::graph;
 using V = G::vertex;
 using Mesh = G::mesh;
 

@@ -20,7 +20,7 @@ std::string fver(const std::string& points_block, const std::string& samples = "
 }
 
 // The message a bad file gives, "" if it reads.
-std::string read_error(const std::string& path) {
+std::string function_read_error(const std::string& path) {
   try {
     Function f(path);
   } catch (const vv::error& e) {
@@ -227,7 +227,7 @@ TEST(UtilFunction, EmptyFunction) {
   EXPECT_THROW(f.write(test_files::scratch_dir() + "nothing.func"), vv::error);
 }
 
-struct bad_file {
+struct bad_function_file {
   const char* name;
   std::string text;
   std::string message;  // after "path"
@@ -235,7 +235,7 @@ struct bad_file {
 
 TEST(UtilFunction, FileErrorsNameFileAndLine) {
   const std::string good_points = "points: 4\n0 0\n0.3 0.1\n0.6 0.9\n1 0.3\n";
-  const std::vector<bad_file> cases = {
+  const std::vector<bad_function_file> cases = {
       {"empty.func", "", ": the file ends where 'fver 1 1' or 'range:' was expected"},
       {"header.func", "\n  hello world\n", ":2: not a function file: expected 'fver 1 1' or 'range:', found 'hello world'"},
       {"version.func", "fver 1 2\n",
@@ -270,13 +270,13 @@ TEST(UtilFunction, FileErrorsNameFileAndLine) {
       {"decreasing.func", fver("points: 4\n0 0\n0.6 0.1\n0.5 0.9\n1 0.3\n"),
        ":8: x decreases from 0.6 (line 7) to 0.5: a function's control points must have non-decreasing x"},
   };
-  for (const bad_file& c : cases) {
+  for (const bad_function_file& c : cases) {
     const std::string path = write_scratch(c.name, c.text);
-    EXPECT_EQ(read_error(path), path + c.message) << c.name;
+    EXPECT_EQ(function_read_error(path), path + c.message) << c.name;
   }
   const std::string missing = test_files::scratch_dir() + "missing.func";
-  EXPECT_EQ(read_error(missing), missing + ": cannot open: No such file or directory");
-  EXPECT_EQ(read_error(test_files::scratch_dir()),
+  EXPECT_EQ(function_read_error(missing), missing + ": cannot open: No such file or directory");
+  EXPECT_EQ(function_read_error(test_files::scratch_dir()),
             test_files::scratch_dir() + ": cannot open: it is a folder, not a file");
 }
 

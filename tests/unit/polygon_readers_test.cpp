@@ -17,6 +17,7 @@
 #include <string>
 #include <vector>
 
+#include "positions_graph.hpp"
 #include "special_files.hpp"
 #include "test_files.hpp"
 
@@ -26,14 +27,7 @@ using test_files::write_scratch;
 using Points = std::vector<std::array<double, 3>>;
 using Faces = std::vector<std::vector<std::uint32_t>>;
 
-struct VP {
-  util::Point<double> pos;
-  template <class F>
-  void vv_fields(F&& f) {
-    f("pos", pos);
-  }
-};
-using G = vv::graph<VP>;
+using G = positions_graph::graph;
 
 // The message of reading `bytes` as file `name` into a mesh, without the
 // scratch folder; the mesh must be unchanged.

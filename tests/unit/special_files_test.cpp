@@ -12,6 +12,7 @@
 #include <cstdint>
 #include <string>
 
+#include "positions_graph.hpp"
 #include "special_files.hpp"
 #include "test_files.hpp"
 
@@ -21,14 +22,7 @@
 
 namespace {
 
-struct VP {
-  util::Point<double> pos;
-  template <class F>
-  void vv_fields(F&& f) {
-    f("pos", pos);
-  }
-};
-using G = vv::graph<VP>;
+using G = positions_graph::graph;
 
 const char* const mesh_extensions[] = {".vvm", ".obj", ".off", ".ply", ".stl"};
 

@@ -20,6 +20,7 @@
 #include <string>
 #include <vector>
 
+#include "positions_graph.hpp"
 #include "test_files.hpp"
 
 namespace {
@@ -29,14 +30,7 @@ using test_files::scratch_dir;
 using test_files::slurp;
 using Pt = util::Point<double>;
 
-struct VP {
-  Pt pos;
-  template <class F>
-  void vv_fields(F&& f) {
-    f("pos", pos);
-  }
-};
-using G = vv::graph<VP>;
+using G = positions_graph::graph;
 
 struct NoPos {
   int mark = 0;

@@ -9,14 +9,10 @@
 #include <cctype>
 #include <string>
 
+#include "squeezed.hpp"
 #include "translate.hpp"
 
 namespace {
-
-std::string squeeze(std::string s) {
-  s.erase(std::remove_if(s.begin(), s.end(), [](unsigned char c) { return std::isspace(c); }), s.end());
-  return s;
-}
 
 vvc::translation translated(const std::string& program) {
   vvc::translation t = vvc::translate_text("m.vvp", program);

@@ -9,14 +9,10 @@
 #include <string>
 
 #include "spelling.hpp"
+#include "squeezed.hpp"
 #include "translate.hpp"
 
 namespace {
-
-std::string squeeze(std::string s) {
-  s.erase(std::remove_if(s.begin(), s.end(), [](unsigned char c) { return std::isspace(c); }), s.end());
-  return s;
-}
 
 // The C++ of `code` placed in a function body.
 std::string in_function(const std::string& code) {

@@ -17,6 +17,7 @@
 #include "compile/model_compile.hpp"
 #include "compile/model_path.hpp"
 #include "compile/precompiled_header.hpp"
+#include "compile/shared_declarations.hpp"
 #include "compile/process.hpp"
 #include "translate.hpp"
 
@@ -268,14 +269,16 @@ build_result model_builder::compile_and_store() {
   job.cache_dir = s.cache_dir;
   job.include = include;
   if (s.declarations_apart && !instrumented(flags)) {
-    job.declarations = t.declarations;
+    // Shared by the same declarations in any folder, unless a header they
+    // include could be found in the model's (compile/shared_declarations).
+    job.declarations = declarations_without_folder(t.declarations, model_dir);
     job.declarations_key = content_hash()
                                .add(vvc::version())
                                .add(config::cxx_compiler)
                                .add(command_line(flags))
                                .add(stamp)
-                               .add(model_dir)
-                               .add(t.declarations)
+                               .add(declarations_may_read_folder(job.declarations, model_dir) ? model_dir : "")
+                               .add(job.declarations)
                                .hex();
   }
   auto compiler = [&](const std::string& header_dir) {

@@ -5,10 +5,12 @@
 
 #include <cstdio>
 #include <filesystem>
+#include <fstream>
 #include <map>
 #include <sstream>
 
 #include "compile/process.hpp"
+#include "compile/shared_declarations.hpp"
 #include "compile/text_ends.hpp"
 #include "runner/report_words.hpp"
 
@@ -66,6 +68,23 @@ std::string tidy_path(const std::string& file) {
   return file;
 }
 
+// The folder of the model a plugin was built from: that of the first .vvp
+// file its translated source (model.cpp, kept beside model.so) names. The
+// line tables of a declarations' part that models share name that folder
+// by a marker (compile/shared_declarations.hpp).
+std::string model_folder_of(const std::string& plugin) {
+  std::ifstream cpp(std::filesystem::path(plugin).parent_path() / "model.cpp");
+  for (std::string line; std::getline(cpp, line);) {
+    if (line.rfind("#line ", 0) != 0) continue;
+    std::size_t open = line.find("\"/");
+    std::size_t close = line.rfind('"');
+    if (open == std::string::npos || close <= open) continue;
+    std::string file = line.substr(open + 1, close - open - 1);
+    if (is_model_source(file)) return file.substr(0, file.rfind('/'));
+  }
+  return "";
+}
+
 // addr2line -a prints each address, then function / file:line pairs (more
 // than one when calls were inlined, innermost first).
 std::vector<source_frame> lookup(const std::string& file, const std::vector<std::uintptr_t>& addresses) {
@@ -96,6 +115,7 @@ std::vector<source_frame> lookup(const std::string& file, const std::vector<std:
     f.file = l.substr(0, colon);
     f.line = static_cast<unsigned>(std::strtoul(l.c_str() + colon + 1, nullptr, 10));
     if (f.line > 0 && is_model_source(f.file)) {
+      if (f.file.rfind(model_folder_marker, 0) == 0) f.file = in_model_folder(f.file, model_folder_of(file));
       f.file = tidy_path(f.file);
       out.push_back(f);
     }
