@@ -289,6 +289,19 @@ TEST(SharedDeclarations, OnlyTheLineNamesInsideTheModelsFolderAreMarked) {
   EXPECT_EQ(vvi::in_model_folder("/vv-model-folder/parts/p.vvp", "/w/b"), "/w/b/parts/p.vvp");
   EXPECT_EQ(vvi::in_model_folder("/w/a/m.vvp", "/w/b"), "/w/a/m.vvp");
   EXPECT_EQ(vvi::in_model_folder("/vv-model-folder/m.vvp", ""), "/vv-model-folder/m.vvp");
+  EXPECT_EQ(vvi::with_model_folder("/vv-model-folder/m.vvp:2: at: /vv-model-folder/p.vvp:3: made: raised", "/w/b"),
+            "/w/b/m.vvp:2: at: /w/b/p.vvp:3: made: raised");
+}
+
+TEST(SharedDeclarations, ABuildsModelFolderIsThatOfTheFirstVvpItsSourceNames) {
+  namespace fs = std::filesystem;
+  const std::string build = test_files::scratch_dir() + "shared_declarations_build";
+  fs::remove_all(build);
+  fs::create_directories(build);
+  std::ofstream(build + "/model.cpp") << "#line 1 \"<vvc generated>\"\n#include <x.hpp>\n"
+                                         "#line 1 \"/w/a/m.vvp\"\n#line 4 \"/w/a/parts/p.vvp\"\n";
+  EXPECT_EQ(vvi::model_folder_of_build(build + "/model.so"), "/w/a");
+  EXPECT_EQ(vvi::model_folder_of_build(build + "/missing/model.so"), "");
 }
 
 TEST(SharedDeclarations, AHeaderTheDeclarationsCouldFindInTheFolderMakesThePartTheFolders) {

@@ -394,10 +394,10 @@ TEST(ModelCacheDeclarations, DeclarationsThatDoNotCompileApartAreCompiledWithThe
 }
 
 // The same program in two folders shares one part (its #line names hold
-// the model's folder as a marker), and a crash in the part's code is
-// reported at each folder's own file and line. A folder holding a header
+// the model's folder as a marker), and a crash or a run-time error in the
+// part's code is reported at each folder's own file and line. A folder holding a header
 // the declarations include gets a part of its own.
-TEST(ModelCacheDeclarations, OneProgramInTwoFoldersSharesItsPartAndCrashesNameEachFolder) {
+TEST(ModelCacheDeclarations, OneProgramInTwoFoldersSharesItsPartAndReportsNameEachFolder) {
   const std::string dir = fresh_dir("apart_folders");
   write(dir + "seed.vvp", "start {}\n");
   const std::string cache = cache_with_header(dir);
@@ -424,6 +424,28 @@ TEST(ModelCacheDeclarations, OneProgramInTwoFoldersSharesItsPartAndCrashesNameEa
   }
   ASSERT_EQ(parts_in(cache).size(), 1u);
 
+  // An exception raised there names each folder's file too. The properties
+  // of a thousand vertices are made at a time, by the part's code: the
+  // 2000th vertex makes new ones.
+  const std::string raising =
+      "#include <cstdlib>\n"
+      "inline double made() { if (std::getenv(\"VV_RAISE\")) throw vv::error(vv::where::here(), \"made\", \"raised\"); return 1; }\n"
+      "vertex { double h = made(); };\n"
+      "mesh S;\n"
+      "start { setenv(\"VV_RAISE\", \"1\", 1); for (int i = 0; i < 2000; ++i) { vertex v; add v to S; } }\n";
+  for (const char* folder : {"a", "b"}) {
+    const std::string model = dir + folder + "/r.vvp";
+    write(model, raising);
+    test_run::result ran = run_in(dir, cache, {"--batch", "--steps", "0", model});
+    EXPECT_NE(ran.status, 0) << report(ran);
+    // Thrown where vertices' properties are made, it ends the model.
+    EXPECT_TRUE(contains(ran.err, std::string(folder) + "/r.vvp:2: crashed with an uncaught exception (" + model +
+                                      ":2: made: raised)"))
+        << report(ran);
+    EXPECT_FALSE(contains(ran.err, "vv-model-folder")) << report(ran);
+  }
+  ASSERT_EQ(parts_in(cache).size(), 2u);
+
   // <vector> found beside the model: the compiler would read that one.
   fs::create_directories(dir + "c");
   write(dir + "c/m.vvp", "#include <vector>\n" + program);
@@ -433,7 +455,7 @@ TEST(ModelCacheDeclarations, OneProgramInTwoFoldersSharesItsPartAndCrashesNameEa
     test_run::result compiled = run_in(dir, cache, {"--compile-only", dir + folder + "/m.vvp"});
     EXPECT_EQ(compiled.status, 0) << report(compiled);
   }
-  EXPECT_EQ(parts_in(cache).size(), 3u);
+  EXPECT_EQ(parts_in(cache).size(), 4u);
 }
 
 // A damaged part is found out before it is linked: compiled again, with

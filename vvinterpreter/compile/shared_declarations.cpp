@@ -1,6 +1,7 @@
 #include "compile/shared_declarations.hpp"
 
 #include <filesystem>
+#include <fstream>
 #include <sstream>
 
 namespace vvi {
@@ -9,8 +10,8 @@ const char* const model_folder_marker = "/vv-model-folder";
 
 namespace {
 
-// The name a preprocessor line gives after `directive` ("line 12",
-// "include"): the text between its quotes or angle brackets, or "".
+// The name a preprocessor line gives after `directive` ("include"): the
+// text between its quotes or angle brackets, or "".
 std::string quoted_name(const std::string& line, const std::string& directive) {
   std::size_t at = line.find_first_not_of(" \t");
   if (at == std::string::npos || line[at] != '#') return "";
@@ -59,6 +60,29 @@ std::string in_model_folder(const std::string& file, const std::string& model_di
   const std::string marked = std::string(model_folder_marker) + "/";
   if (model_dir.empty() || file.rfind(marked, 0) != 0) return file;
   return model_dir + "/" + file.substr(marked.size());
+}
+
+std::string with_model_folder(std::string text, const std::string& model_dir) {
+  const std::string marked = std::string(model_folder_marker) + "/";
+  if (model_dir.empty()) return text;
+  for (std::size_t at = text.find(marked); at != std::string::npos; at = text.find(marked, at + model_dir.size() + 1))
+    text.replace(at, marked.size(), model_dir + "/");
+  return text;
+}
+
+std::string model_folder_of_build(const std::string& plugin) {
+  std::ifstream cpp(std::filesystem::path(plugin).parent_path() / "model.cpp");
+  for (std::string line; std::getline(cpp, line);) {
+    if (line.rfind("#line ", 0) != 0) continue;
+    std::size_t open = line.find("\"/");
+    std::size_t close = line.rfind('"');
+    if (open == std::string::npos || close <= open) continue;
+    std::string file = line.substr(open + 1, close - open - 1);
+    const std::string vvp = ".vvp";
+    if (file.size() > vvp.size() && file.compare(file.size() - vvp.size(), vvp.size(), vvp) == 0)
+      return file.substr(0, file.rfind('/'));
+  }
+  return "";
 }
 
 }  // namespace vvi

@@ -4,7 +4,8 @@
 // example, a sweep's working copies) would compile the same declarations
 // twice. The part is compiled with the model's folder in those names
 // replaced by a marker folder; a crash report puts the folder of the
-// model that ran back in (runner/crash_report.cpp).
+// model that ran back in (runner/crash_report.cpp), and so does a run-time
+// error's message (runner/session.cpp).
 #pragma once
 
 #include <string>
@@ -28,5 +29,14 @@ bool declarations_may_read_folder(const std::string& text, const std::string& mo
 //! A file named inside the marker folder, named inside model_dir instead;
 //! any other file unchanged.
 std::string in_model_folder(const std::string& file, const std::string& model_dir);
+
+//! text (a run-time error's message) with every file named inside the
+//! marker folder named inside model_dir instead.
+std::string with_model_folder(std::string text, const std::string& model_dir);
+
+//! The folder of the model a plugin in the cache was built from: that of
+//! the first .vvp file its translated source (model.cpp, kept beside
+//! model.so) names; "" when there is none.
+std::string model_folder_of_build(const std::string& plugin);
 
 }  // namespace vvi

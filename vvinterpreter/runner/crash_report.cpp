@@ -5,7 +5,6 @@
 
 #include <cstdio>
 #include <filesystem>
-#include <fstream>
 #include <map>
 #include <sstream>
 
@@ -68,23 +67,6 @@ std::string tidy_path(const std::string& file) {
   return file;
 }
 
-// The folder of the model a plugin was built from: that of the first .vvp
-// file its translated source (model.cpp, kept beside model.so) names. The
-// line tables of a declarations' part that models share name that folder
-// by a marker (compile/shared_declarations.hpp).
-std::string model_folder_of(const std::string& plugin) {
-  std::ifstream cpp(std::filesystem::path(plugin).parent_path() / "model.cpp");
-  for (std::string line; std::getline(cpp, line);) {
-    if (line.rfind("#line ", 0) != 0) continue;
-    std::size_t open = line.find("\"/");
-    std::size_t close = line.rfind('"');
-    if (open == std::string::npos || close <= open) continue;
-    std::string file = line.substr(open + 1, close - open - 1);
-    if (is_model_source(file)) return file.substr(0, file.rfind('/'));
-  }
-  return "";
-}
-
 // addr2line -a prints each address, then function / file:line pairs (more
 // than one when calls were inlined, innermost first).
 std::vector<source_frame> lookup(const std::string& file, const std::vector<std::uintptr_t>& addresses) {
@@ -115,7 +97,7 @@ std::vector<source_frame> lookup(const std::string& file, const std::vector<std:
     f.file = l.substr(0, colon);
     f.line = static_cast<unsigned>(std::strtoul(l.c_str() + colon + 1, nullptr, 10));
     if (f.line > 0 && is_model_source(f.file)) {
-      if (f.file.rfind(model_folder_marker, 0) == 0) f.file = in_model_folder(f.file, model_folder_of(file));
+      if (f.file.rfind(model_folder_marker, 0) == 0) f.file = in_model_folder(f.file, model_folder_of_build(file));
       f.file = tidy_path(f.file);
       out.push_back(f);
     }
@@ -258,7 +240,11 @@ crash_text describe_crash(const child_end& end, const std::string& model) {
   std::string where = place(stack, model);
   std::string tail = where_it_was(end);
   if (!end.crash.exception.empty()) {
-    t.line = where + ": crashed with an uncaught exception (" + end.crash.exception + ")" + tail;
+    // Raised in a shared declarations' part: its file named in the model's folder.
+    std::string exception = end.crash.exception;
+    if (exception.find(model_folder_marker) != std::string::npos && !end.modules.empty())
+      exception = with_model_folder(exception, model_folder_of_build(end.modules.begin()->second));
+    t.line = where + ": crashed with an uncaught exception (" + exception + ")" + tail;
     t.panel = t.line;
   } else if (end.crash.signal.empty()) {  // it died without a report: killed from outside
     t.line = where + ": killed by " + signal_text(end.signal) + tail + killer(end);

@@ -11,6 +11,7 @@
 #include <fstream>
 #include <thread>
 
+#include "compile/shared_declarations.hpp"
 #include "runner/crash_report.hpp"
 #include "runner/fault_guard.hpp"
 #include "runner/throw_points.hpp"
@@ -53,7 +54,11 @@ unsupervised_block unsupervised;
 // An error raised without a source location (`v->pos` on the null vertex)
 // came with the addresses it was raised at: its .vvp line is the innermost
 // frame of the model's own source.
-std::string session::locate(const std::string& message) const {
+std::string session::locate(const std::string& raw) const {
+  // Raised in a shared declarations' part: its file named in the model's folder.
+  const std::string message = raw.find(model_folder_marker) == std::string::npos
+                                  ? raw
+                                  : with_model_folder(raw, model_folder_of_build(plugin_->path()));
   std::size_t n = 0;
   const void* const* frames = plugin_->model().error_frames(&n);
   if (n == 0) return message;
