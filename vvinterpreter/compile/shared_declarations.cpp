@@ -4,6 +4,8 @@
 #include <fstream>
 #include <sstream>
 
+#include "compile/text_ends.hpp"
+
 namespace vvi {
 
 const char* const model_folder_marker = "/vv-model-folder";
@@ -78,11 +80,14 @@ std::string model_folder_of_build(const std::string& plugin) {
     std::size_t close = line.rfind('"');
     if (open == std::string::npos || close <= open) continue;
     std::string file = line.substr(open + 1, close - open - 1);
-    const std::string vvp = ".vvp";
-    if (file.size() > vvp.size() && file.compare(file.size() - vvp.size(), vvp.size(), vvp) == 0)
-      return file.substr(0, file.rfind('/'));
+    if (ends_with(file, ".vvp")) return file.substr(0, file.rfind('/'));
   }
   return "";
+}
+
+std::string message_of_build(const std::string& message, const std::string& plugin) {
+  if (message.find(model_folder_marker) == std::string::npos) return message;
+  return with_model_folder(message, model_folder_of_build(plugin));
 }
 
 }  // namespace vvi

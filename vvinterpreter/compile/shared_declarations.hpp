@@ -39,4 +39,9 @@ std::string with_model_folder(std::string text, const std::string& model_dir);
 //! model.so) names; "" when there is none.
 std::string model_folder_of_build(const std::string& plugin);
 
+//! A message of that plugin's model with its files named in the model's
+//! folder (with_model_folder); read from the cache only when it names the
+//! marker folder.
+std::string message_of_build(const std::string& message, const std::string& plugin);
+
 }  // namespace vvi

@@ -242,8 +242,7 @@ crash_text describe_crash(const child_end& end, const std::string& model) {
   if (!end.crash.exception.empty()) {
     // Raised in a shared declarations' part: its file named in the model's folder.
     std::string exception = end.crash.exception;
-    if (exception.find(model_folder_marker) != std::string::npos && !end.modules.empty())
-      exception = with_model_folder(exception, model_folder_of_build(end.modules.begin()->second));
+    if (!end.modules.empty()) exception = message_of_build(exception, end.modules.begin()->second);
     t.line = where + ": crashed with an uncaught exception (" + exception + ")" + tail;
     t.panel = t.line;
   } else if (end.crash.signal.empty()) {  // it died without a report: killed from outside

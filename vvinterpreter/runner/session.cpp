@@ -56,9 +56,7 @@ unsupervised_block unsupervised;
 // frame of the model's own source.
 std::string session::locate(const std::string& raw) const {
   // Raised in a shared declarations' part: its file named in the model's folder.
-  const std::string message = raw.find(model_folder_marker) == std::string::npos
-                                  ? raw
-                                  : with_model_folder(raw, model_folder_of_build(plugin_->path()));
+  const std::string message = message_of_build(raw, plugin_->path());
   std::size_t n = 0;
   const void* const* frames = plugin_->model().error_frames(&n);
   if (n == 0) return message;
