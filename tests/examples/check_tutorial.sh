@@ -38,6 +38,8 @@ link_from_build() {  # the program at $1 of BUILD, at the same place in the copy
 }
 link_from_build "$interpreter"
 link_from_build "$checker"
+# The cache may not exist yet when this is the first test ctest starts.
+mkdir -p "$build_dir/test-model-cache"
 ln -sfn "$build_dir/test-model-cache" build/test-model-cache
 
 # The tutorial as steps: NNN.file (with its path), NNN.sh, NNN.out.
