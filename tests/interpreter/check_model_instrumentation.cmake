@@ -2,28 +2,25 @@
 # and VV_SANITIZE_MODELS=0 leaves them uninstrumented (the host tests'
 # setting). Checked on the compiled plugin: an instrumented one needs the
 # AddressSanitizer runtime (__asan_init), a plain one does not.
-#   cmake -DINTERPRETER=... -DMODEL=... -DWORK=... -P check_model_instrumentation.cmake
-file(REMOVE_RECURSE ${WORK})
+# Both builds go to the tests' shared model cache: the instrumented one is
+# the example cases' build of the same model, and the precompiled headers
+# are the other tests' (a cache of its own built both headers again).
+#   cmake -DINTERPRETER=... -DMODEL=... -DCACHE=... -P check_model_instrumentation.cmake
 function(compiled_plugin setting out)
   execute_process(COMMAND ${CMAKE_COMMAND} -E env ${setting}
-                          ${INTERPRETER} --compile-only --cache ${WORK}/${ARGN} ${MODEL}
-                  RESULT_VARIABLE status OUTPUT_VARIABLE output ERROR_VARIABLE output)
+                          ${INTERPRETER} --compile-only --cache ${CACHE} ${MODEL}
+                  RESULT_VARIABLE status OUTPUT_VARIABLE output ERROR_VARIABLE errors)
   if(NOT status EQUAL 0)
-    message(FATAL_ERROR "compile failed (${setting}):\n${output}")
+    message(FATAL_ERROR "compile failed (${setting}):\n${output}${errors}")
   endif()
-  # The cache names each build twice: by its key (a link) and by itself.
-  file(GLOB found ${WORK}/${ARGN}/plugins/*/model.so)
-  set(plugins "")
-  foreach(path IN LISTS found)
-    file(REAL_PATH ${path} real)
-    list(APPEND plugins ${real})
-  endforeach()
-  list(REMOVE_DUPLICATES plugins)
-  list(LENGTH plugins count)
-  if(NOT count EQUAL 1)
-    message(FATAL_ERROR "expected one plugin in ${WORK}/${ARGN}, found: ${plugins}")
+  # --compile-only prints the plugin's path as its last line.
+  string(STRIP "${output}" output)
+  string(REGEX REPLACE ".*\n" "" plugin "${output}")
+  if(NOT EXISTS "${plugin}")
+    message(FATAL_ERROR "--compile-only printed no plugin (${setting}):\n${output}${errors}")
   endif()
-  set(${out} ${plugins} PARENT_SCOPE)
+  file(REAL_PATH ${plugin} plugin)
+  set(${out} ${plugin} PARENT_SCOPE)
 endfunction()
 function(needs_asan plugin out)
   execute_process(COMMAND nm -D --undefined-only ${plugin} OUTPUT_VARIABLE symbols RESULT_VARIABLE status)
@@ -37,8 +34,11 @@ function(needs_asan plugin out)
   endif()
 endfunction()
 
-compiled_plugin("VV_SANITIZE_MODELS=1" instrumented default)
-compiled_plugin("VV_SANITIZE_MODELS=0" plain plain)
+compiled_plugin("VV_SANITIZE_MODELS=1" instrumented)
+compiled_plugin("VV_SANITIZE_MODELS=0" plain)
+if(plain STREQUAL instrumented)
+  message(FATAL_ERROR "one build for both settings: ${plain}")
+endif()
 needs_asan(${instrumented} instrumented_needs)
 needs_asan(${plain} plain_needs)
 if(NOT instrumented_needs)
