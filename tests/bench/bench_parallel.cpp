@@ -7,7 +7,10 @@
 // (vv::parallel_for_each). For each it prints the median wall time over
 // interleaved runs, the CPU time of all threads and per thread, and the
 // speed-up of N threads over 1; the positions must be the same bytes,
-// or the benchmark fails.
+// or the benchmark fails. A third implementation is the ceiling the
+// machine sets: the same step over plain arrays (positions, and the
+// neighbours as index lists in the mesh's order), an OpenMP loop with no
+// library around it. Its speed-up is what memory allows this loop here.
 #include "bench_input.hpp"
 #include "bench_translated.hpp"
 #include "stopwatch.hpp"
@@ -17,6 +20,7 @@
 #include <cstdlib>
 #include <cstring>
 #include <filesystem>
+#include <omp.h>
 #include <string>
 #include <vector>
 
@@ -52,6 +56,44 @@ bench_result run_vvlib(const bench_input& input, int steps, unsigned threads) {
   timer.stop(r);
   for (vertex v : vv::each(S)) r.positions.push_back({v->pos.x(), v->pos.y(), v->pos.z()});
   r.vertices = S.size();
+  return r;
+}
+
+// The step over plain arrays, in the order and with the arithmetic of the
+// others (so the same bytes): the neighbours are read from a vvlib mesh
+// built from the same faces, before the clock starts.
+bench_result run_plain(const bench_input& input, int steps, unsigned threads) {
+  graph::context ctx;
+  graph::mesh S(ctx);
+  vv::build_from_faces(S, input.points, input.polygons(), "bench input");
+  std::vector<std::uint32_t> index(ctx.slot_count(), 0);
+  std::vector<Pt> pos;
+  for (vertex v : vv::each(S)) {
+    index[v.slot()] = static_cast<std::uint32_t>(pos.size());
+    pos.push_back(v->pos);
+  }
+  std::vector<std::size_t> first{0};
+  std::vector<std::uint32_t> neighbours;
+  for (vertex v : vv::each(S)) {
+    for (vertex n : vv::each(v)) neighbours.push_back(index[n.slot()]);
+    first.push_back(neighbours.size());
+  }
+  const long n = static_cast<long>(pos.size());
+  std::vector<Pt> old(pos.size());
+  bench_result r;
+  const stopwatch timer;
+  for (int i = 0; i < steps; ++i) {
+    old = pos;
+#pragma omp parallel for num_threads(threads) schedule(dynamic, 1024)
+    for (long v = 0; v < n; ++v) {
+      Pt sum;
+      for (std::size_t k = first[v]; k < first[v + 1]; ++k) sum += old[neighbours[k]];
+      pos[v] = 0.5 * old[v] + 0.5 / double(first[v + 1] - first[v]) * sum;
+    }
+  }
+  timer.stop(r);
+  for (const Pt& p : pos) r.positions.push_back({p.x(), p.y(), p.z()});
+  r.vertices = pos.size();
   return r;
 }
 
@@ -91,7 +133,7 @@ int main(int argc, char** argv) {
 
   const std::string scratch = (std::filesystem::temp_directory_path() / ("bench_parallel_" + std::to_string(getpid()))).string();
   translated_model model{std::string(VV_BENCH_MODELS) + "/smooth.so", "icosphere.vvm"};
-  series vv1, vvn, lib1, libn;
+  series vv1, vvn, lib1, libn, plain1, plainn;
   try {
     // The translated runs fork; a child forked after this process ran
     // OpenMP threads would wait for threads it does not have (libgomp is
@@ -105,6 +147,8 @@ int main(int argc, char** argv) {
     for (int r = 0; r < runs; ++r) {
       lib1.add(run_vvlib(input, steps, 1));
       libn.add(run_vvlib(input, steps, threads));
+      plain1.add(run_plain(input, steps, 1));
+      plainn.add(run_plain(input, steps, threads));
     }
   } catch (const std::exception& e) {
     std::fprintf(stderr, "bench_parallel: %s\n", e.what());
@@ -112,9 +156,12 @@ int main(int argc, char** argv) {
     return 1;
   }
   std::filesystem::remove_all(scratch);
-  const bool same = vv1.same && vvn.same && lib1.same && libn.same && vv1.positions == vvn.positions &&
-                    vv1.positions == lib1.positions && lib1.positions == libn.positions;
-  std::printf("same positions on 1 and %u threads, translated and vvlib: %s\n", threads, same ? "yes" : "NO");
+  const bool same = vv1.same && vvn.same && lib1.same && libn.same && plain1.same && plainn.same &&
+                    vv1.positions == vvn.positions && vv1.positions == lib1.positions &&
+                    lib1.positions == libn.positions && lib1.positions == plain1.positions &&
+                    plain1.positions == plainn.positions;
+  std::printf("same positions on 1 and %u threads, translated, vvlib and plain arrays: %s\n", threads,
+              same ? "yes" : "NO");
   auto line = [&](const char* name, const series& one, const series& many) {
     const double w1 = median(one.wall), wn = median(many.wall), c1 = median(one.cpu), cn = median(many.cpu);
     std::printf("%-10s 1 thread: %8.1f ms (cpu %8.1f)   %u threads: %8.1f ms (cpu %8.1f, %7.1f per thread)   speed-up %.2f\n",
@@ -123,8 +170,10 @@ int main(int argc, char** argv) {
   };
   const double vv_speedup = line("vv", vv1, vvn);
   const double lib_speedup = line("vvlib", lib1, libn);
-  std::printf("smooth vv_1_ms=%.3f vv_n_ms=%.3f vv_speedup=%.3f vvlib_1_ms=%.3f vvlib_n_ms=%.3f vvlib_speedup=%.3f threads=%u\n",
+  const double plain_speedup = line("plain", plain1, plainn);
+  std::printf("smooth vv_1_ms=%.3f vv_n_ms=%.3f vv_speedup=%.3f vvlib_1_ms=%.3f vvlib_n_ms=%.3f vvlib_speedup=%.3f "
+              "plain_1_ms=%.3f plain_n_ms=%.3f plain_speedup=%.3f threads=%u\n",
               median(vv1.wall), median(vvn.wall), vv_speedup, median(lib1.wall), median(libn.wall), lib_speedup,
-              threads);
+              median(plain1.wall), median(plainn.wall), plain_speedup, threads);
   return same ? 0 : 1;
 }
