@@ -691,7 +691,9 @@ class emitter {
         if (!s.name || s.operands.empty() || s.children.empty()) break;
         in_loop_of_own loop(*this, false);
         w_.at(*s.tok);
-        w_.text("for (vertex ");
+        // auto&&: a neighbourhood loop's variable is the loop's own
+        // uncounted handle (vv/iteration.hpp), a mesh loop's a counted one.
+        w_.text("for ([[maybe_unused]] auto&& ");
         w_.token(*s.name);
         w_.text(" : vv::each(");
         emit(s.operands[0]);

@@ -49,7 +49,7 @@ bench_result run_vvlib(const bench_input& input, int steps, unsigned threads) {
     vv::synchronise(S);
     vv::parallel_for_each(S, [](vertex v) {
       Pt sum;
-      for (vertex n : vv::each(vv::old(v))) sum += vv::old(n)->pos;
+      for (auto&& n : vv::each(vv::old(v))) sum += vv::old(n)->pos;
       v->pos = 0.5 * vv::old(v)->pos + 0.5 / double(vv::valence(vv::old(v))) * sum;
     });
   }

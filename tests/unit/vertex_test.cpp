@@ -625,4 +625,123 @@ TEST(VertexLifetime, KeptAliveByAnOldNeighbourhoodUntilNextSynchronise) {
   EXPECT_EQ(ctx.live_vertices(), 1u);
 }
 
+// ------------------------------------------- a neighbourhood loop's variable
+// `for (auto&& x : vv::each(v))` (how vvc writes forall) binds x to the
+// loop's own handle, which does not count its vertex: reading neighbours
+// costs no count changes. Every copy, move or return of it is counted.
+
+// a with neighbours b and c, whose only references are a's neighbourhood.
+struct fan {
+  G::context ctx;
+  V a, other;
+  std::uint32_t b_slot = 0, c_slot = 0;
+  fan() {
+    a = ctx.new_vertex();
+    other = ctx.new_vertex();
+    V b = ctx.new_vertex(VP{2, 0, Pt()}), c = ctx.new_vertex(VP{3, 0, Pt()});
+    vv::make_nb(a, {b, c});
+    b_slot = b.slot();
+    c_slot = c.slot();
+  }
+  //! Leaves b and c referenced by nothing a neighbourhood or mesh holds.
+  void unlink() { vv::make_nb(a, {}); }
+};
+
+TEST(VertexNeighbourLoop, ReadsNeighboursWithoutCountingThem) {
+  fan f;
+  const std::uint32_t b_refs = f.ctx.refs(f.b_slot), c_refs = f.ctx.refs(f.c_slot);
+  std::vector<double> xs;
+  for (auto&& x : vv::each(f.a)) {
+    EXPECT_EQ(f.ctx.refs(f.b_slot), b_refs);
+    EXPECT_EQ(f.ctx.refs(f.c_slot), c_refs);
+    xs.push_back(x->x);
+  }
+  EXPECT_EQ(xs, (std::vector<double>{2, 3}));
+  EXPECT_EQ(f.ctx.refs(f.b_slot), b_refs);
+  EXPECT_EQ(f.ctx.refs(f.c_slot), c_refs);
+}
+
+TEST(VertexNeighbourLoop, CopiesOfTheVariableKeepTheirVerticesAlive) {
+  fan f;
+  std::vector<V> kept;
+  for (auto&& x : vv::each(f.a)) {
+    V copy = x;
+    kept.push_back(copy);
+    kept.push_back(x);
+  }
+  EXPECT_EQ(f.ctx.refs(f.b_slot), 2u);
+  f.unlink();
+  EXPECT_EQ(f.ctx.collect_garbage(), 0u);
+  EXPECT_EQ(kept[0]->x, 2.0);
+  EXPECT_EQ(kept[3]->x, 3.0);
+  kept.clear();
+  EXPECT_EQ(f.ctx.collect_garbage(), 2u);
+}
+
+TEST(VertexNeighbourLoop, AMovedVariableStaysValidAndItsTargetIsCounted) {
+  fan f;
+  std::vector<V> moved;
+  for (auto&& x : vv::each(f.a)) {
+    moved.push_back(std::move(x));
+    EXPECT_TRUE(x);
+    EXPECT_EQ(x, moved.back());
+    V assigned;
+    assigned = std::move(x);
+    EXPECT_EQ(assigned, x);
+  }
+  EXPECT_EQ(f.ctx.refs(f.b_slot), 1u);
+  EXPECT_EQ(f.ctx.refs(f.c_slot), 1u);
+  f.unlink();
+  EXPECT_EQ(f.ctx.collect_garbage(), 0u);
+  moved.clear();
+  EXPECT_EQ(f.ctx.collect_garbage(), 2u);
+}
+
+// Every return of the loop variable: a compiler may construct it in the
+// caller's object (clang does), which is why the variable is a reference
+// to the loop's handle rather than a handle of its own.
+V first_neighbour(const V& v) {
+  for (auto&& x : vv::each(v)) return x;
+  return V();
+}
+
+TEST(VertexNeighbourLoop, ReturnedFromAFunctionItIsCounted) {
+  fan f;
+  V first = first_neighbour(f.a);
+  EXPECT_EQ(first.slot(), f.b_slot);
+  EXPECT_EQ(f.ctx.refs(f.b_slot), 1u);
+  f.unlink();
+  EXPECT_EQ(f.ctx.collect_garbage(), 1u);  // c only
+  EXPECT_EQ(first->x, 2.0);
+}
+
+TEST(VertexNeighbourLoop, AssigningToTheVariableChangesThatIterationOnly) {
+  fan f;
+  const std::uint32_t other_refs = f.ctx.refs(f.other.slot());
+  std::vector<std::uint32_t> visited;
+  for (auto&& x : vv::each(f.a)) {
+    visited.push_back(x.slot());
+    x = f.other;
+    EXPECT_EQ(f.ctx.refs(f.other.slot()), other_refs + 1);
+  }
+  EXPECT_EQ(visited, (std::vector<std::uint32_t>{f.b_slot, f.c_slot}));
+  EXPECT_EQ(f.ctx.refs(f.other.slot()), other_refs);
+  EXPECT_EQ(vv::valence(f.a), 2u);
+}
+
+// A mesh loop's variable is counted: the body may take its vertex out of
+// the mesh and drop every other reference.
+TEST(VertexNeighbourLoop, AMeshLoopsVariableIsCounted) {
+  G::context ctx;
+  G::mesh M(ctx);
+  { M.add(ctx.new_vertex(VP{5, 0, Pt()})); }
+  for (auto&& v : vv::each(M)) {
+    EXPECT_EQ(ctx.refs(v.slot()), 2u);  // the mesh and the variable
+    M.remove(v);
+    EXPECT_EQ(ctx.collect_garbage(), 0u);
+    EXPECT_EQ(v->x, 5.0);
+  }
+  EXPECT_EQ(ctx.collect_garbage(), 1u);
+}
+
 }  // namespace

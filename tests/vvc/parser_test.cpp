@@ -114,8 +114,8 @@ TEST(Translation, VertexDeclarations) {
 
 TEST(Translation, ForallOverAnyOperand) {
   expect_translation("forall x in nextto a in b { f(x); }",
-                     "for (vertex x : vv::each(vv::next_to(a, b))) { f(x); }");
-  expect_translation("forall x in `v n++;", "for (vertex x : vv::each(vv::old(v))) n++;");
+                     "for ([[maybe_unused]] auto&& x : vv::each(vv::next_to(a, b))) { f(x); }");
+  expect_translation("forall x in `v n++;", "for ([[maybe_unused]] auto&& x : vv::each(vv::old(v))) n++;");
 }
 
 TEST(Translation, CommentsAndStringsAreNotTranslated) {

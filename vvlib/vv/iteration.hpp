@@ -1,8 +1,8 @@
 // `forall` (LANGUAGE.md section 6):
 //
-//   forall v in M { ... }     for (vertex v : vv::each(M)) { ... }
-//   forall x in v { ... }     for (vertex x : vv::each(v)) { ... }
-//   forall x in `v { ... }    for (vertex x : vv::each(vv::old(v))) { ... }
+//   forall v in M { ... }     for (auto&& v : vv::each(M)) { ... }
+//   forall x in v { ... }     for (auto&& x : vv::each(v)) { ... }
+//   forall x in `v { ... }    for (auto&& x : vv::each(vv::old(v))) { ... }
 //
 // The set or neighbourhood is taken once, at loop entry. A neighbourhood
 // loop visits a snapshot of the neighbours present at entry, in rotation
@@ -33,9 +33,17 @@ class neighbour_range {
   neighbour_range(const neighbour_range&) = delete;
   neighbour_range& operator=(const neighbour_range&) = delete;
 
+  // The loop variable is the iterator's own handle, borrowed (uncounted):
+  // `for (auto&& x : vv::each(v))`, as vvc writes forall, binds to it and
+  // reads the neighbours without a count in and out for each; a
+  // `for (vertex x : ...)` copies it into a counted handle. Either way a
+  // copy or a return of x is counted.
   class iterator {
    public:
-    vertex_type operator*() const { return vertex_type::from_slot(ctx_, *p_); }
+    vertex_type& operator*() const noexcept {
+      current_.rebind_borrowed(ctx_, *p_);
+      return current_;
+    }
     iterator& operator++() noexcept {
       ++p_;
       return *this;
@@ -48,6 +56,7 @@ class neighbour_range {
     iterator(context<Tr>* c, const std::uint32_t* p) noexcept : ctx_(c), p_(p) {}
     context<Tr>* ctx_;
     const std::uint32_t* p_;
+    mutable vertex_type current_;
   };
   iterator begin() const noexcept { return iterator(ctx_, ids()); }
   iterator end() const noexcept { return iterator(ctx_, ids() + size_); }

@@ -29,7 +29,12 @@ class vertex {
   VV_INLINE vertex(const vertex& o) noexcept : ctx_(o.ctx_), id_(o.id_) {
     if (id_) ctx_->retain(id_);
   }
-  vertex(vertex&& o) noexcept : ctx_(o.ctx_), id_(o.id_) { o.id_ = 0; }
+  // A borrowed handle (see rebind_borrowed) is copied, never robbed: its
+  // loop still reads it, and the new handle must hold a count of its own.
+  VV_INLINE vertex(vertex&& o) noexcept : ctx_(o.ctx_), id_(o.id_) {
+    if (!o.borrowed_) o.id_ = 0;
+    else if (id_) ctx_->retain(id_);
+  }
   VV_INLINE vertex& operator=(const vertex& o) noexcept {
     if (o.id_) o.ctx_->retain(o.id_);
     drop();
@@ -37,7 +42,8 @@ class vertex {
     id_ = o.id_;
     return *this;
   }
-  vertex& operator=(vertex&& o) noexcept {
+  VV_INLINE vertex& operator=(vertex&& o) noexcept {
+    if (o.borrowed_) return *this = static_cast<const vertex&>(o);
     if (this != &o) {
       drop();
       ctx_ = o.ctx_;
@@ -86,6 +92,17 @@ class vertex {
     if (id) c->retain(id);
     return vertex(c, id);
   }
+  //! Makes this handle name a slot without counting it: a neighbourhood
+  //! loop's variable (neighbour_range), valid while the loop keeps the
+  //! collector paused. Copies and moves of it are counted handles, so
+  //! only the loop's own handle goes uncounted; a loop body reads its
+  //! neighbours without touching their counts.
+  VV_INLINE void rebind_borrowed(context_type* c, std::uint32_t id) noexcept {
+    drop();
+    ctx_ = c;
+    id_ = id;
+    borrowed_ = true;
+  }
 
   friend bool operator==(const vertex& a, const vertex& b) noexcept {
     return a.id_ == b.id_ && (a.id_ == 0 || a.ctx_ == b.ctx_);
@@ -108,12 +125,14 @@ class vertex {
  private:
   vertex(context_type* c, std::uint32_t id) noexcept : ctx_(c), id_(id) {}
   VV_INLINE void drop() noexcept {
-    if (id_) ctx_->release(id_);
+    if (id_ && !borrowed_) ctx_->release(id_);
     id_ = 0;
+    borrowed_ = false;
   }
 
   context_type* ctx_ = nullptr;
   std::uint32_t id_ = 0;
+  bool borrowed_ = false;  // rebind_borrowed: no count to release
 };
 
 //! `labelof v`
