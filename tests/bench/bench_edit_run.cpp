@@ -65,6 +65,8 @@ double median(std::vector<double> v) {
 
 }  // namespace
 
+const char* const usage = "usage: bench_edit_run [--runs R] [--interpreter PATH] [MODEL.vvp ...]   (default: the examples)\n";
+
 int main(int argc, char** argv) {
   int runs = 3;
   std::vector<std::string> models;
@@ -72,7 +74,15 @@ int main(int argc, char** argv) {
     std::string a = argv[i];
     if (a == "--runs" && i + 1 < argc) runs = std::max(1, std::atoi(argv[++i]));
     else if (a == "--interpreter" && i + 1 < argc) interpreter = argv[++i];
+    else if (a == "--help" || a == "-h") return std::printf("%s", usage), 0;
+    else if (!a.empty() && a[0] == '-') return std::fprintf(stderr, "bench_edit_run: unknown option %s\n%s", a.c_str(), usage), 2;
     else models.push_back(a);
+  }
+  // Every model is checked before any is timed: a typo ends the run at once.
+  for (const std::string& m : models) {
+    std::error_code ec;
+    if (!fs::is_regular_file(m, ec))
+      return std::fprintf(stderr, "bench_edit_run: %s: no such model file\n", m.c_str()), 2;
   }
   if (models.empty()) {
     for (const auto& e : fs::directory_iterator(std::string(VV_SOURCE_DIR) + "/examples"))
