@@ -20,7 +20,6 @@
 #include <cstdlib>
 #include <cstring>
 #include <filesystem>
-#include <omp.h>
 #include <string>
 #include <vector>
 
