@@ -297,6 +297,49 @@ std::string command_of(const test_run::result& compiled) {
 
 const std::string apart_flag = "-DVV_DECLARATIONS_APART";
 
+// The tests below that make parts from a model's first build say
+// --expect-edits, as the viewer does. Without it, batch runs and
+// --compile-only compile a model whole until its file changes: the part
+// costs half a compile more and pays off only from the first edit on.
+TEST(ModelCacheDeclarations, BatchCompilesANewModelWholeAndMakesItsPartOnceTheFileChanges) {
+  const std::string dir = fresh_dir("apart_when_edited");
+  write(dir + "seed.vvp", "start {}\n");
+  const std::string cache = cache_with_header(dir);
+  const std::string model = dir + "m.vvp";
+  const std::string head = "#include <cstdio>\nvertex { double h; };\nmesh S;\n";
+  write(model, head + "start { vertex v; v$h = 1.5; std::printf(\"h=%g\\n\", v$h); }\n");
+  test_run::result first = run_in(dir, cache, {"--compile-only", model});
+  ASSERT_EQ(first.status, 0) << report(first);
+  std::string command = command_of(first);
+  EXPECT_EQ(std::count(command.begin(), command.end(), '\n'), 1) << command;
+  EXPECT_FALSE(contains(command, apart_flag)) << command;
+  EXPECT_FALSE(fs::exists(cache + "/decls") && !parts_in(cache).empty());
+
+  // Edited: the part is made beside the program, and the next edit links it.
+  write(model, head + "start { vertex v; v$h = 2.5; std::printf(\"h=%g\\n\", v$h); }\n");
+  test_run::result edited = run_in(dir, cache, {"--batch", model});
+  ASSERT_EQ(edited.status, 0) << report(edited);
+  EXPECT_TRUE(contains(edited.out, "h=2.5\n")) << report(edited);
+  ASSERT_EQ(parts_in(cache).size(), 1u);
+  write(model, head + "start { vertex v; v$h = 3.5; std::printf(\"h=%g\\n\", v$h); }\n");
+  test_run::result again = run_in(dir, cache, {"--compile-only", model});
+  ASSERT_EQ(again.status, 0) << report(again);
+  command = command_of(again);
+  EXPECT_EQ(std::count(command.begin(), command.end(), '\n'), 1) << command;
+  EXPECT_TRUE(contains(command, apart_flag)) << command;
+
+  // A part that exists serves a first build of the same declarations (the
+  // same program in another folder).
+  fs::create_directories(dir + "other");
+  write(dir + "other/m.vvp", head + "start { vertex v; v$h = 4.5; std::printf(\"h=%g\\n\", v$h); }\n");
+  test_run::result other = run_in(dir, cache, {"--batch", dir + "other/m.vvp"});
+  ASSERT_EQ(other.status, 0) << report(other);
+  EXPECT_TRUE(contains(other.out, "h=4.5\n")) << report(other);
+  test_run::result listed = run_in(dir, cache, {"--compile-only", dir + "other/m.vvp"});
+  EXPECT_TRUE(contains(command_of(listed), apart_flag)) << command_of(listed);
+  EXPECT_EQ(parts_in(cache).size(), 1u);
+}
+
 // An edit below the last property block compiles the program alone and
 // links the part compiled for the declarations the first time.
 TEST(ModelCacheDeclarations, AnEditBelowThePropertyBlocksCompilesOnlyTheProgram) {
@@ -306,7 +349,7 @@ TEST(ModelCacheDeclarations, AnEditBelowThePropertyBlocksCompilesOnlyTheProgram)
   const std::string model = dir + "m.vvp";
   const std::string head = "#include <cstdio>\nvertex { double h; };\nmesh S;\n";
   write(model, head + "start { vertex v; v$h = 1.5; add v to S; std::printf(\"h=%g in %zu\\n\", v$h, S.size()); }\n");
-  test_run::result first = run_in(dir, cache, {"--batch", model});
+  test_run::result first = run_in(dir, cache, {"--batch", "--expect-edits", model});
   ASSERT_EQ(first.status, 0) << report(first);
   EXPECT_TRUE(contains(first.out, "h=1.5 in 1\n")) << report(first);
   ASSERT_EQ(parts_in(cache).size(), 1u);
@@ -315,7 +358,7 @@ TEST(ModelCacheDeclarations, AnEditBelowThePropertyBlocksCompilesOnlyTheProgram)
   const auto compiled_at = fs::last_write_time(part + "/declarations.o");
 
   write(model, head + "start { vertex v; v$h = 2.5; add v to S; std::printf(\"h=%g in %zu\\n\", v$h, S.size()); }\n");
-  test_run::result edited = run_in(dir, cache, {"--compile-only", model});
+  test_run::result edited = run_in(dir, cache, {"--compile-only", "--expect-edits", model});
   ASSERT_EQ(edited.status, 0) << report(edited);
   // One compiler run: the program, linked with the part as it was.
   std::string command = command_of(edited);
@@ -324,13 +367,13 @@ TEST(ModelCacheDeclarations, AnEditBelowThePropertyBlocksCompilesOnlyTheProgram)
   EXPECT_TRUE(contains(command, " " + part + "/declarations.o ")) << command;
   EXPECT_EQ(parts_in(cache).size(), 1u);
   EXPECT_EQ(fs::last_write_time(part + "/declarations.o"), compiled_at);
-  test_run::result ran = run_in(dir, cache, {"--batch", model});
+  test_run::result ran = run_in(dir, cache, {"--batch", "--expect-edits", model});
   EXPECT_EQ(ran.status, 0) << report(ran);
   EXPECT_TRUE(contains(ran.out, "h=2.5 in 1\n")) << report(ran);
 
   // The compiler's errors about the program still name its lines.
   write(model, head + "start { vertex v; v$h = no_such_value; }\n");
-  test_run::result broken = run_in(dir, cache, {"--batch", model});
+  test_run::result broken = run_in(dir, cache, {"--batch", "--expect-edits", model});
   EXPECT_EQ(broken.status, 1) << report(broken);
   EXPECT_TRUE(contains(broken.err, model + ":4:25: error: 'no_such_value' was not declared in this scope")) << report(broken);
 }
@@ -351,7 +394,7 @@ TEST(ModelCacheDeclarations, DeclarationsThatHoldStateAreCompiledWithTheProgram)
         "mesh S;\n"
         "start { S.readXMLFile(\"" VV_SOURCE_DIR "/models/pyramid.vvm\"); vertex v;\n"
         "  std::printf(\"vertex %d of %d made\\n\", v$id, made); }\n");
-  test_run::result ran = run_in(dir, cache, {"--batch", model});
+  test_run::result ran = run_in(dir, cache, {"--batch", "--expect-edits", model});
   ASSERT_EQ(ran.status, 0) << report(ran);
   // One counter: every vertex's properties made count (a chunk of vertex
   // slots makes them a thousand at a time, its old copies too), so the
@@ -364,7 +407,7 @@ TEST(ModelCacheDeclarations, DeclarationsThatHoldStateAreCompiledWithTheProgram)
   EXPECT_GE(made, id) << report(ran);
   ASSERT_EQ(parts_in(cache).size(), 1u);
   EXPECT_EQ(test_files::slurp(parts_in(cache)[0] + "/verdict"), "writable data of its own (_ZL4made)");
-  test_run::result again = run_in(dir, cache, {"--compile-only", "--rebuild", model});
+  test_run::result again = run_in(dir, cache, {"--compile-only", "--expect-edits", "--rebuild", model});
   ASSERT_EQ(again.status, 0) << report(again);
   EXPECT_FALSE(contains(command_of(again), apart_flag)) << command_of(again);
 }
@@ -379,14 +422,14 @@ TEST(ModelCacheDeclarations, DeclarationsThatDoNotCompileApartAreCompiledWithThe
   const std::string model = dir + "m.vvp";
   const std::string head = "#include <cstdio>\nauto scale() { return 2.0; }\nvertex { double h = scale(); };\n";
   write(model, head + "start { vertex v; std::printf(\"h=%g\\n\", v$h); }\n");
-  test_run::result ran = run_in(dir, cache, {"--batch", model});
+  test_run::result ran = run_in(dir, cache, {"--batch", "--expect-edits", model});
   ASSERT_EQ(ran.status, 0) << report(ran);
   EXPECT_TRUE(contains(ran.out, "h=2\n")) << report(ran);
   ASSERT_EQ(parts_in(cache).size(), 1u);
   EXPECT_EQ(test_files::slurp(parts_in(cache)[0] + "/verdict"), "the declarations' part does not compile");
 
   write(model, head + "start { vertex v; std::printf(\"h=%g!\\n\", v$h); }\n");
-  test_run::result edited = run_in(dir, cache, {"--compile-only", model});
+  test_run::result edited = run_in(dir, cache, {"--compile-only", "--expect-edits", model});
   ASSERT_EQ(edited.status, 0) << report(edited);
   std::string command = command_of(edited);
   EXPECT_EQ(std::count(command.begin(), command.end(), '\n'), 1) << command;
@@ -414,7 +457,7 @@ TEST(ModelCacheDeclarations, OneProgramInTwoFoldersSharesItsPartAndReportsNameEa
     fs::create_directories(dir + folder);
     const std::string model = dir + folder + "/m.vvp";
     write(model, program);
-    test_run::result ran = run_in(dir, cache, {"--batch", "--steps", "0", model});
+    test_run::result ran = run_in(dir, cache, {"--batch", "--expect-edits", "--steps", "0", model});
     EXPECT_NE(ran.status, 0) << report(ran);
     // The mesh's initialiser makes the first vertices; paths as the user
     // typed them, relative to the working folder.
@@ -436,7 +479,7 @@ TEST(ModelCacheDeclarations, OneProgramInTwoFoldersSharesItsPartAndReportsNameEa
   for (const char* folder : {"a", "b"}) {
     const std::string model = dir + folder + "/r.vvp";
     write(model, raising);
-    test_run::result ran = run_in(dir, cache, {"--batch", "--steps", "0", model});
+    test_run::result ran = run_in(dir, cache, {"--batch", "--expect-edits", "--steps", "0", model});
     EXPECT_NE(ran.status, 0) << report(ran);
     // Thrown where vertices' properties are made, it ends the model.
     EXPECT_TRUE(contains(ran.err, std::string(folder) + "/r.vvp:2: crashed with an uncaught exception (" + model +
@@ -452,7 +495,7 @@ TEST(ModelCacheDeclarations, OneProgramInTwoFoldersSharesItsPartAndReportsNameEa
   write(dir + "c/vector", "#include_next <vector>\n");
   write(dir + "b/m.vvp", "#include <vector>\n" + program);
   for (const char* folder : {"b", "c"}) {
-    test_run::result compiled = run_in(dir, cache, {"--compile-only", dir + folder + "/m.vvp"});
+    test_run::result compiled = run_in(dir, cache, {"--compile-only", "--expect-edits", dir + folder + "/m.vvp"});
     EXPECT_EQ(compiled.status, 0) << report(compiled);
   }
   EXPECT_EQ(parts_in(cache).size(), 4u);
@@ -467,7 +510,7 @@ TEST(ModelCacheDeclarations, DamagedPartIsCompiledAgainWithANote) {
   const std::string model = dir + "m.vvp";
   const std::string head = "#include <cstdio>\nvertex { double h; };\n";
   write(model, head + "start { vertex v; v$h = 3; std::printf(\"h=%g\\n\", v$h); }\n");
-  test_run::result first = run_in(dir, cache, {"--compile-only", model});
+  test_run::result first = run_in(dir, cache, {"--compile-only", "--expect-edits", model});
   ASSERT_EQ(first.status, 0) << report(first);
   ASSERT_EQ(parts_in(cache).size(), 1u);
   const std::string object = fs::canonical(parts_in(cache)[0]).string() + "/declarations.o";
@@ -475,7 +518,7 @@ TEST(ModelCacheDeclarations, DamagedPartIsCompiledAgainWithANote) {
   fs::resize_file(object, 4096);
 
   write(model, head + "start { vertex v; v$h = 4; std::printf(\"h=%g\\n\", v$h); }\n");
-  test_run::result ran = run_in(dir, cache, {"--batch", model});
+  test_run::result ran = run_in(dir, cache, {"--batch", "--expect-edits", model});
   EXPECT_EQ(ran.status, 0) << report(ran);
   EXPECT_EQ(ran.err, model + ": note: the cached declarations' part was damaged (declarations.o has 4096 bytes, " +
                          std::to_string(size) + " expected); it was compiled again\n");

@@ -255,6 +255,10 @@ void building_options(CLI::App& app, options& o) {
        "compile the model even when the cache holds it (batch, --compile-only; the viewer has its Recompile button)",
        o.rebuild);
   flag(app, "--debug", "building", "build the model with -g -O0 and run it in this process, for gdb", o.debug);
+  flag(app, "--expect-edits", "building",
+       "compile the declarations apart from the first build, as the viewer does, so that the first edit compiles "
+       "only the program (batch and --compile-only otherwise start that once the file changes)",
+       o.expect_edits);
 }
 
 // Everything the parser knows, in the order --help lists it.

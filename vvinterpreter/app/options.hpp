@@ -50,6 +50,7 @@ struct options {
   std::string cache;
   int optimization = 1;
   bool rebuild = false;
+  bool expect_edits = false;  // --expect-edits: the declarations' part from the first build
   bool quiet = false;
   sweep_options sweep;
 };

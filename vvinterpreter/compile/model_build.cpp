@@ -10,6 +10,7 @@
 
 #include "app/files.hpp"
 #include "compile/build_config.hpp"
+#include "compile/build_history.hpp"
 #include "compile/compiler_messages.hpp"
 #include "compile/dependencies.hpp"
 #include "compile/hashing.hpp"
@@ -162,6 +163,10 @@ struct model_builder {
   std::optional<build_result> find_in_cache();
   std::optional<build_result> prepare_work();
   build_result compile_and_store();
+  //! The file and how it is compiled, whatever its text (build_history.hpp).
+  std::string history_key() const {
+    return content_hash().add(model_dir).add(fs::path(where.built()).filename().string()).add(command_line(flags)).hex();
+  }
 
   const std::string& path;
   const build_settings& s;
@@ -280,7 +285,9 @@ build_result model_builder::compile_and_store() {
                                .add(declarations_may_read_folder(job.declarations, model_dir) ? model_dir : "")
                                .add(job.declarations)
                                .hex();
+    job.make_part = s.part_from_the_first_build || compiled_before(s.cache_dir, history_key());
   }
+  remember_compiled(s.cache_dir, history_key());
   auto compiler = [&](const std::string& header_dir) {
     std::vector<std::string> argv = {config::cxx_compiler};
     if (!header_dir.empty()) argv.insert(argv.end(), {"-I", header_dir});

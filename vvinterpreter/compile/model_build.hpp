@@ -19,6 +19,11 @@ struct build_settings {
   //! the cache (compiled once for them) rather than compile it every time
   //! (declarations_part.hpp). The plugin is the same either way.
   bool declarations_apart = true;
+  //! Compile the part from the model's first build (the viewer, and
+  //! --expect-edits), rather than once the file has changed (batch runs
+  //! and --compile-only: build_history.hpp). An existing part is used
+  //! either way.
+  bool part_from_the_first_build = false;
   //! Called when the sources have been read and the compiler is about to
   //! start (not for a build found in the cache).
   std::function<void()> compiling;

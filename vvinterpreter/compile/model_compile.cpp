@@ -34,7 +34,8 @@ class compilation {
     if (j_.declarations.empty()) return whole();
     declarations_part part = find_declarations(j_.cache_dir, j_.declarations_key);
     if (!part.why.empty() && part.state == declarations_part::missing) out_.notes += "note: " + part.why + "; it was compiled again\n";
-    if (part.state == declarations_part::unusable) return whole();
+    if (part.state == declarations_part::unusable || (part.state == declarations_part::missing && !j_.make_part))
+      return whole();
     if (part.state == declarations_part::usable) {
       // The part compiles and defines nothing the program defines: what
       // fails here fails in the program.

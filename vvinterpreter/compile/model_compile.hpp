@@ -23,6 +23,8 @@ struct compile_job {
   std::string include;                 // vvlib's headers
   std::string declarations;            // the declarations' part, or "" to compile whole
   std::string declarations_key;
+  //! No part for the declarations yet: make it now (else compile whole).
+  bool make_part = true;
 };
 
 struct compile_outcome {

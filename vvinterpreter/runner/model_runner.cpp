@@ -15,6 +15,8 @@ build_settings build_settings_for(const options& o, bool force) {
   s.optimization = o.optimization;
   s.debug = o.debug;
   s.force = force || o.rebuild;  // --rebuild: batch and --compile-only build once
+  // The viewer is there to edit the model (compile/build_history.hpp).
+  s.part_from_the_first_build = o.expect_edits || !(o.batch || o.compile_only);
   return s;
 }
 
