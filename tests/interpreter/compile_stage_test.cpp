@@ -5,6 +5,7 @@
 // compiler_output_test.cpp.
 #include <gtest/gtest.h>
 
+#include <sched.h>
 #include <sys/time.h>
 
 #include <ctime>
@@ -14,6 +15,8 @@
 #include <string>
 #include <vector>
 
+#include "compile/build_cores.hpp"
+#include "compile/build_history.hpp"
 #include "compile/compiler_messages.hpp"
 #include "compile/model_cache.hpp"
 #include "compile/model_path.hpp"
@@ -320,4 +323,43 @@ TEST(SharedDeclarations, AHeaderTheDeclarationsCouldFindInTheFolderMakesThePartT
   // vvlib's own headers are looked for in the model's folder first too.
   fs::create_directories(dir + "/util");
   EXPECT_TRUE(vvi::declarations_may_read_folder(text, dir));
+}
+
+// ---- when a new model's declarations' part is made (build_cores, build_history) ----
+
+// A build may run as many compilers as its process has cores that are
+// idle: never more than its CPU affinity allows (a Slurm allocation of one
+// CPU compiles a new model whole) nor than VV_BUILD_CORES, never fewer
+// than one.
+TEST(BuildCores, NoMoreThanTheProcessMayUseOrTheLimitAndAtLeastOne) {
+  cpu_set_t all;
+  ASSERT_EQ(sched_getaffinity(0, sizeof all, &all), 0);
+  unsigned usable = static_cast<unsigned>(CPU_COUNT(&all));
+  unsigned idle = vvi::idle_cores_for_a_build(0);
+  EXPECT_GE(idle, 1u);
+  EXPECT_LE(idle, usable);
+  EXPECT_EQ(vvi::idle_cores_for_a_build(1), 1u);
+  cpu_set_t one;
+  CPU_ZERO(&one);
+  for (int c = 0; c < CPU_SETSIZE; ++c)
+    if (CPU_ISSET(c, &all)) {
+      CPU_SET(c, &one);
+      break;
+    }
+  ASSERT_EQ(sched_setaffinity(0, sizeof one, &one), 0);
+  unsigned on_one = vvi::idle_cores_for_a_build(0);
+  ASSERT_EQ(sched_setaffinity(0, sizeof all, &all), 0);
+  EXPECT_EQ(on_one, 1u);
+}
+
+// The cache remembers a file by its identity alone: a file is new until a
+// build of it has been attempted.
+TEST(BuildHistory, AFileIsNewUntilItHasBeenCompiled) {
+  std::string cache = fresh_dir("build_history");
+  EXPECT_FALSE(vvi::compiled_before(cache, "0123abcd"));
+  vvi::remember_compiled(cache, "0123abcd");
+  EXPECT_TRUE(vvi::compiled_before(cache, "0123abcd"));
+  EXPECT_FALSE(vvi::compiled_before(cache, "0123abce"));
+  vvi::remember_compiled(cache, "0123abcd");  // again: still the one mark
+  EXPECT_TRUE(vvi::compiled_before(cache, "0123abcd"));
 }

@@ -373,6 +373,8 @@ parse_result parse_options(int argc, const char* const* argv) {
     // cluster profile's); --opt overrides it.
     if (const char* level = std::getenv("VV_OPT"); level && *level)
       r.opts.optimization = static_cast<int>(number(level, 0, 3, "VV_OPT needs a level from 0 to 3"));
+    if (const char* cores = std::getenv("VV_BUILD_CORES"); cores && *cores)
+      r.opts.build_cores = static_cast<unsigned>(number(cores, 1, 4096, "VV_BUILD_CORES needs a number of cores (1 or more)"));
     app.parse(argc, argv);
     check_whole(app, models, r.opts);
     r.ok = true;

@@ -51,6 +51,7 @@ struct options {
   int optimization = 1;
   bool rebuild = false;
   bool expect_edits = false;  // --expect-edits: the declarations' part from the first build
+  unsigned build_cores = 0;   // $VV_BUILD_CORES: compilers one build may run at once (0: the idle cores)
   bool quiet = false;
   sweep_options sweep;
 };

@@ -4,7 +4,8 @@
 // beside a model that is never edited, it costs half as much again as
 // compiling the model whole. The viewer, which is there for editing,
 // compiles the part from the first build; batch runs and --compile-only
-// compile a new file whole and make its part once the file has changed.
+// make it with a new file's first build only on an idle core
+// (build_cores.hpp), and otherwise once the file has changed.
 //
 // A file is remembered, under a hash of its folder, its name and the
 // compiler's options, as an empty file in the cache's built/ folder.

@@ -10,6 +10,7 @@
 
 #include "app/files.hpp"
 #include "compile/build_config.hpp"
+#include "compile/build_cores.hpp"
 #include "compile/build_history.hpp"
 #include "compile/compiler_messages.hpp"
 #include "compile/dependencies.hpp"
@@ -285,7 +286,10 @@ build_result model_builder::compile_and_store() {
                                .add(declarations_may_read_folder(job.declarations, model_dir) ? model_dir : "")
                                .add(job.declarations)
                                .hex();
-    job.make_part = s.part_from_the_first_build || compiled_before(s.cache_dir, history_key());
+    // A new model's part only on a core that would otherwise be idle, or
+    // for the edits to come (build_history.hpp, build_cores.hpp).
+    job.make_part = s.part_from_the_first_build || compiled_before(s.cache_dir, history_key()) ||
+                    idle_cores_for_a_build(s.build_cores) >= 2;
   }
   remember_compiled(s.cache_dir, history_key());
   auto compiler = [&](const std::string& header_dir) {

@@ -24,6 +24,9 @@ struct build_settings {
   //! and --compile-only: build_history.hpp). An existing part is used
   //! either way.
   bool part_from_the_first_build = false;
+  //! Compilers one build may run at once, 0: the idle cores
+  //! (build_cores.hpp). With one, a new model is compiled whole.
+  unsigned build_cores = 0;
   //! Called when the sources have been read and the compiler is about to
   //! start (not for a build found in the cache).
   std::function<void()> compiling;
