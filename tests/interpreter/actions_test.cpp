@@ -13,18 +13,14 @@
 #include "runner/crash_report.hpp"
 #include "runner/model_runner.hpp"
 #include "runner/supervisor.hpp"
+#include "in_process_options.hpp"
 
 namespace {
 
 const std::string model_file = std::string(VV_TESTS_DIR) + "/models/actions.vvp";
 const std::string cell_system_file = std::string(VV_SOURCE_DIR) + "/examples/cell_system.vvp";
 
-vvi::options model_options(const std::string& file = model_file) {
-  vvi::options o;
-  o.model = file;
-  o.cache = VV_TEST_CACHE;
-  return o;
-}
+vvi::options model_options(const std::string& file = model_file) { return in_process_options(file); }
 
 class Actions : public testing::Test {
  protected:

@@ -14,6 +14,7 @@
 #include "control/command_text.hpp"
 #include "control/model_controller.hpp"
 #include "control/script_player.hpp"
+#include "in_process_options.hpp"
 #include "test_files.hpp"
 
 namespace controller_harness {
@@ -23,9 +24,7 @@ using vvi::command;
 inline const std::string state_models = VV_TESTS_DIR "/state_models/";
 
 inline vvi::options options_for(const std::string& model) {
-  vvi::options o;
-  o.model = state_models + model;
-  o.cache = VV_TEST_CACHE;
+  vvi::options o = in_process_options(state_models + model);
   o.quiet = true;
   return o;
 }
