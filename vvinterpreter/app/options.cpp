@@ -257,7 +257,7 @@ void building_options(CLI::App& app, options& o) {
   flag(app, "--debug", "building", "build the model with -g -O0 and run it in this process, for gdb", o.debug);
   flag(app, "--expect-edits", "building",
        "compile the declarations apart from the first build, as the viewer does, so that the first edit compiles "
-       "only the program (batch and --compile-only otherwise start that once the file changes)",
+       "only the program (batch and --compile-only otherwise do that only on an idle core, or once the file changes)",
        o.expect_edits);
 }
 
