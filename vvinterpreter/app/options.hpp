@@ -51,7 +51,7 @@ struct options {
   int optimization = 1;
   bool rebuild = false;
   bool expect_edits = false;  // --expect-edits: the declarations' part from the first build
-  unsigned build_cores = 0;   // $VV_BUILD_CORES: compilers one build may run at once (0: the idle cores)
+  unsigned build_cores = 0;   // $VV_BUILD_CORES: the most idle cores a new model's build counts (0: no limit)
   bool quiet = false;
   sweep_options sweep;
 };

@@ -290,8 +290,8 @@ build_result model_builder::compile_and_store() {
     // for the edits to come (build_history.hpp, build_cores.hpp).
     job.make_part = s.part_from_the_first_build || compiled_before(s.cache_dir, history_key()) ||
                     idle_cores_for_a_build(s.build_cores) >= 2;
+    remember_compiled(s.cache_dir, history_key());
   }
-  remember_compiled(s.cache_dir, history_key());
   auto compiler = [&](const std::string& header_dir) {
     std::vector<std::string> argv = {config::cxx_compiler};
     if (!header_dir.empty()) argv.insert(argv.end(), {"-I", header_dir});

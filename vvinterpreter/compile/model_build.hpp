@@ -24,7 +24,7 @@ struct build_settings {
   //! and --compile-only: build_history.hpp). An existing part is used
   //! either way.
   bool part_from_the_first_build = false;
-  //! Compilers one build may run at once, 0: the idle cores
+  //! The most cores a new model's build counts as idle, 0: no limit
   //! (build_cores.hpp). With one, a new model is compiled whole.
   unsigned build_cores = 0;
   //! Called when the sources have been read and the compiler is about to
