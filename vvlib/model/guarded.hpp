@@ -35,15 +35,12 @@ struct exchange {
   std::string state;                 //!< the last save_state's bytes
 };
 
-//! Runs fn, turning any exception into the returned message (or NULL). An
-//! exception that is not a vv::error keeps where it was thrown, when the
-//! host knows (its stack is gone once caught): the host names its .vvp line.
-template <class Fn>
-const char* guarded(exchange& x, Fn&& fn) noexcept {
-  x.error_frames.clear();
+//! The message of the exception being handled, kept in x (called from a
+//! catch block). One function for every entry point: each guarded() call
+//! then compiles to a try and a call, not to five handlers of its own.
+inline const char* keep_current_exception(exchange& x) noexcept {
   try {
-    fn();
-    return nullptr;
+    throw;  // a rethrow: the host's record of where it was thrown stays
   } catch (const vv::error& e) {
     x.last_error = e.what();
     x.error_frames = e.frames();
@@ -66,6 +63,20 @@ const char* guarded(exchange& x, Fn&& fn) noexcept {
     x.error_frames.resize(vv_host_throw_frames(x.error_frames.data(), x.error_frames.size()));
   }
   return x.last_error.c_str();
+}
+
+//! Runs fn, turning any exception into the returned message (or NULL). An
+//! exception that is not a vv::error keeps where it was thrown, when the
+//! host knows (its stack is gone once caught): the host names its .vvp line.
+template <class Fn>
+const char* guarded(exchange& x, Fn&& fn) noexcept {
+  x.error_frames.clear();
+  try {
+    fn();
+    return nullptr;
+  } catch (...) {
+    return keep_current_exception(x);
+  }
 }
 
 //! A message that is the host's mistake, not the program's (no line to
