@@ -120,13 +120,19 @@ TEST(ModelCache, TruncatedPluginIsCompiledAgainWithANote) {
   EXPECT_EQ(again.err, tiny_warning(model));
 }
 
+//! The suite's precompiled header exists once this has compiled a model
+//! of the source tree (the same model for every test: its build is made
+//! once, where a seed in each test's folder was a compile of its own).
+void suite_header_exists() {
+  test_run::result seeded = run({"--compile-only", VV_TESTS_DIR "/models/header_seed.vvp"});
+  ASSERT_EQ(seeded.status, 0) << report(seeded);
+}
+
 // A truncated precompiled header is built again (in a cache of this test's
 // own: the suite's is in use by other tests), with one line saying why.
 TEST(ModelCache, TruncatedPrecompiledHeaderIsBuiltAgainWithANote) {
   const std::string dir = fresh_dir("truncated_header");
-  write(dir + "seed.vvp", "start {}\n");
-  test_run::result seeded = run({"--compile-only", dir + "seed.vvp"});  // the suite's header exists
-  ASSERT_EQ(seeded.status, 0) << report(seeded);
+  ASSERT_NO_FATAL_FAILURE(suite_header_exists());
   const std::string cache = dir + "cache";
   fs::create_directories(cache);
   fs::copy(std::string(VV_TEST_CACHE) + "/pch", cache + "/pch", fs::copy_options::recursive | fs::copy_options::copy_symlinks);
@@ -281,8 +287,7 @@ TEST(ModelCache, PluginsAreLinkedWithLldWhereItIsInstalled) {
 //! (hard links: nothing here changes it), so its decls/ folder holds this
 //! test's parts alone.
 std::string cache_with_header(const std::string& dir) {
-  test_run::result seeded = run({"--compile-only", dir + "seed.vvp"});  // the suite's header exists
-  EXPECT_EQ(seeded.status, 0) << report(seeded);
+  suite_header_exists();
   const std::string cache = dir + "cache";
   fs::create_directories(cache);
   fs::copy(std::string(VV_TEST_CACHE) + "/pch", cache + "/pch",
@@ -313,7 +318,6 @@ const std::string apart_flag = "-DVV_DECLARATIONS_APART";
 // compile more and pays off only from the first edit on.
 TEST(ModelCacheDeclarations, BatchCompilesANewModelWholeOnOneCoreAndMakesItsPartOnceTheFileChanges) {
   const std::string dir = fresh_dir("apart_when_edited");
-  write(dir + "seed.vvp", "start {}\n");
   const std::string cache = cache_with_header(dir);
   const std::string model = dir + "m.vvp";
   const std::string head = "#include <cstdio>\nvertex { double h; };\nmesh S;\n";
@@ -355,7 +359,6 @@ TEST(ModelCacheDeclarations, BatchCompilesANewModelWholeOnOneCoreAndMakesItsPart
 // links the part compiled for the declarations the first time.
 TEST(ModelCacheDeclarations, AnEditBelowThePropertyBlocksCompilesOnlyTheProgram) {
   const std::string dir = fresh_dir("apart_edit");
-  write(dir + "seed.vvp", "start {}\n");
   const std::string cache = cache_with_header(dir);
   const std::string model = dir + "m.vvp";
   const std::string head = "#include <cstdio>\nvertex { double h; };\nmesh S;\n";
@@ -394,7 +397,6 @@ TEST(ModelCacheDeclarations, AnEditBelowThePropertyBlocksCompilesOnlyTheProgram)
 // part's and the program's: such a model is compiled whole.
 TEST(ModelCacheDeclarations, DeclarationsThatHoldStateAreCompiledWithTheProgram) {
   const std::string dir = fresh_dir("apart_state");
-  write(dir + "seed.vvp", "start {}\n");
   const std::string cache = cache_with_header(dir);
   const std::string model = dir + "m.vvp";
   write(model,
@@ -428,7 +430,6 @@ TEST(ModelCacheDeclarations, DeclarationsThatHoldStateAreCompiledWithTheProgram)
 // at once from then on.
 TEST(ModelCacheDeclarations, DeclarationsThatDoNotCompileApartAreCompiledWithTheProgram) {
   const std::string dir = fresh_dir("apart_fails");
-  write(dir + "seed.vvp", "start {}\n");
   const std::string cache = cache_with_header(dir);
   const std::string model = dir + "m.vvp";
   const std::string head = "#include <cstdio>\nauto scale() { return 2.0; }\nvertex { double h = scale(); };\n";
@@ -453,7 +454,6 @@ TEST(ModelCacheDeclarations, DeclarationsThatDoNotCompileApartAreCompiledWithThe
 // the declarations include gets a part of its own.
 TEST(ModelCacheDeclarations, OneProgramInTwoFoldersSharesItsPartAndReportsNameEachFolder) {
   const std::string dir = fresh_dir("apart_folders");
-  write(dir + "seed.vvp", "start {}\n");
   const std::string cache = cache_with_header(dir);
   // The properties' initialiser traps once a vertex is made; the code that
   // makes vertices is the part's (vv::context is instantiated there).
@@ -516,7 +516,6 @@ TEST(ModelCacheDeclarations, OneProgramInTwoFoldersSharesItsPartAndReportsNameEa
 // one line saying why.
 TEST(ModelCacheDeclarations, DamagedPartIsCompiledAgainWithANote) {
   const std::string dir = fresh_dir("apart_damaged");
-  write(dir + "seed.vvp", "start {}\n");
   const std::string cache = cache_with_header(dir);
   const std::string model = dir + "m.vvp";
   const std::string head = "#include <cstdio>\nvertex { double h; };\n";
