@@ -47,6 +47,27 @@ inline test_run::result run_in(const std::string& cwd, const std::string& cache,
 //! vvinterpreter on the suite's cache with these arguments.
 inline test_run::result run(const std::vector<std::string>& args) { return run_in(".", VV_TEST_CACHE, args); }
 
+//! The suite's precompiled header exists once this has compiled a model
+//! of the source tree (the same model for every test: its build is made
+//! once, where a seed in each test's folder was a compile of its own).
+inline void suite_header_exists() {
+  test_run::result seeded = run({"--compile-only", VV_TESTS_DIR "/models/header_seed.vvp"});
+  ASSERT_EQ(seeded.status, 0) << report(seeded);
+}
+
+//! A cache of the test's own that shares the suite's precompiled headers
+//! (hard links: nothing here changes them), so its decls/ folder holds
+//! this test's parts alone.
+inline std::string cache_with_header(const std::string& dir) {
+  namespace fs = std::filesystem;
+  suite_header_exists();
+  const std::string cache = dir + "cache";
+  fs::create_directories(cache);
+  fs::copy(std::string(VV_TEST_CACHE) + "/pch", cache + "/pch",
+           fs::copy_options::recursive | fs::copy_options::copy_symlinks | fs::copy_options::create_hard_links);
+  return cache;
+}
+
 }  // namespace cache_harness
 
 using namespace cache_harness;

@@ -120,14 +120,6 @@ TEST(ModelCache, TruncatedPluginIsCompiledAgainWithANote) {
   EXPECT_EQ(again.err, tiny_warning(model));
 }
 
-//! The suite's precompiled header exists once this has compiled a model
-//! of the source tree (the same model for every test: its build is made
-//! once, where a seed in each test's folder was a compile of its own).
-void suite_header_exists() {
-  test_run::result seeded = run({"--compile-only", VV_TESTS_DIR "/models/header_seed.vvp"});
-  ASSERT_EQ(seeded.status, 0) << report(seeded);
-}
-
 // A truncated precompiled header is built again (in a cache of this test's
 // own: the suite's is in use by other tests), with one line saying why.
 TEST(ModelCache, TruncatedPrecompiledHeaderIsBuiltAgainWithANote) {
@@ -282,18 +274,6 @@ TEST(ModelCache, PluginsAreLinkedWithLldWhereItIsInstalled) {
 #endif
 
 // ---- the declarations' part (vvinterpreter/compile/declarations_part.hpp) ----
-
-//! A cache of the test's own that shares the suite's precompiled header
-//! (hard links: nothing here changes it), so its decls/ folder holds this
-//! test's parts alone.
-std::string cache_with_header(const std::string& dir) {
-  suite_header_exists();
-  const std::string cache = dir + "cache";
-  fs::create_directories(cache);
-  fs::copy(std::string(VV_TEST_CACHE) + "/pch", cache + "/pch",
-           fs::copy_options::recursive | fs::copy_options::copy_symlinks | fs::copy_options::create_hard_links);
-  return cache;
-}
 
 //! The entries (keys) of the cache's decls/ folder.
 std::vector<std::string> parts_in(const std::string& cache) {

@@ -29,7 +29,8 @@ void report_build(const options& o, const build_result& b) {
   if (!b.warnings.empty()) std::fprintf(stderr, "%s", b.warnings.c_str());
   if (o.quiet) return;
   if (b.cached) std::printf("%s: compiled model found in the cache\n", o.model.c_str());
-  else std::printf("%s: translated in %.0f ms, compiled in %.2f s\n", o.model.c_str(), b.translate_ms, b.compile_ms / 1000);
+  else std::printf("%s: translated in %.0f ms, compiled in %.2f s%s\n", o.model.c_str(), b.translate_ms,
+                   b.compile_ms / 1000, b.quick ? " (a quick build: unoptimised)" : "");
 }
 
 // --list-params: the parameters as the file and --set give them, before
@@ -188,9 +189,10 @@ std::string measure_frame(const options& o, model_controller& c, batch_view& vie
 int run_model_headless(const options& o) {
   inline_jobs jobs;
   batch_view view(o);
-  model_controller c(o, jobs, view, {}, controller_policy{false});
+  model_controller c(o, jobs, view, {}, controller_policy{false, false});
   view.attach(c);
-  build_result b = c.runner().build(false);
+  // --expect-edits: the modelling loop, so an edit runs as a quick build.
+  build_result b = c.runner().build(false, {}, o.expect_edits);
   if (!b.ok) return fail(b.error);
   if (o.list_params) return list_parameters(o, b);
   report_build(o, b);

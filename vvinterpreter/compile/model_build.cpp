@@ -5,6 +5,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <future>
 #include <optional>
 #include <sstream>
 
@@ -18,9 +19,11 @@
 #include "compile/model_cache.hpp"
 #include "compile/model_compile.hpp"
 #include "compile/model_path.hpp"
+#include "compile/declarations_part.hpp"
 #include "compile/precompiled_header.hpp"
-#include "compile/shared_declarations.hpp"
 #include "compile/process.hpp"
+#include "compile/quick_build.hpp"
+#include "compile/shared_declarations.hpp"
 #include "translate.hpp"
 
 namespace vvi {
@@ -161,9 +164,29 @@ struct model_builder {
 
   std::optional<build_result> translate();
   void name_the_build();
-  std::optional<build_result> find_in_cache();
+  std::optional<build_result> find_in_cache(const std::string& build_key);
+  std::optional<build_result> quick_build();
   std::optional<build_result> prepare_work();
   build_result compile_and_store();
+  build_result store(const std::string& build_key, const std::string& about_model, const std::string& commands);
+  bool make_work(const std::string& build_key);
+  void say_compiling() {  // once, also when a quick build gave way to g++
+    if (s.compiling && !said_compiling) s.compiling();
+    said_compiling = true;
+  }
+  bool quick_wanted() const { return s.quick && quick_builds_available() && !s.debug && !instrumented(flags); }
+  //! The declarations' text without the model's folder, and its part's key.
+  std::string shared_declarations() const { return declarations_without_folder(t.declarations, model_dir); }
+  std::string part_key(const std::string& declarations) const {
+    return content_hash()
+        .add(vvc::version())
+        .add(config::cxx_compiler)
+        .add(command_line(flags))
+        .add(stamp)
+        .add(declarations_may_read_folder(declarations, model_dir) ? model_dir : "")
+        .add(declarations)
+        .hex();
+  }
   //! The file and how it is compiled, whatever its text (build_history.hpp).
   std::string history_key() const {
     return content_hash().add(model_dir).add(fs::path(where.built()).filename().string()).add(command_line(flags)).hex();
@@ -181,6 +204,9 @@ struct model_builder {
   std::string pch, damage, header_error;
   std::string work;  // the folder the build is made in, before it is published
   std::chrono::steady_clock::time_point t1;
+  bool said_compiling = false;
+  //! A quick build's header, made beside the first build's (quick_wanted).
+  std::future<std::string> quick_header_made;
 };
 
 // The program in C++, with the files it was read from.
@@ -213,11 +239,11 @@ void model_builder::name_the_build() {
 }
 
 // A whole build under the key, none of whose own headers changed.
-std::optional<build_result> model_builder::find_in_cache() {
+std::optional<build_result> model_builder::find_in_cache(const std::string& build_key) {
   std::error_code ec;
   if (!s.force) {
     // The build the key names now, resolved once: a rebuild may replace it.
-    fs::path entry = fs::canonical(plugins + "/" + key, ec);
+    fs::path entry = fs::canonical(plugins + "/" + build_key, ec);
     std::string why;
     cache::verdict found = ec ? cache::verdict::unlisted : cache::verify(entry.string(), why);
     if (found == cache::verdict::good) {
@@ -239,24 +265,80 @@ std::optional<build_result> model_builder::find_in_cache() {
   return std::nullopt;
 }
 
-// The precompiled vvlib header, and a work folder holding the C++.
-std::optional<build_result> model_builder::prepare_work() {
-  if (s.compiling) s.compiling();
+// After an edit, when the optimised build's declarations' part is in the
+// cache: the program at -O0 with clang, linked with it (quick_build.hpp).
+// Anything else, a compile error included, leaves the build to g++, whose
+// messages the user is shown.
+std::optional<build_result> model_builder::quick_build() {
+  if (!quick_wanted() || !s.declarations_apart) return std::nullopt;
+  declarations_part part = find_declarations(s.cache_dir, part_key(shared_declarations()));
+  if (part.state != declarations_part::usable) return std::nullopt;
+  std::vector<std::string> quick = quick_flags(include);
+  std::string quick_key = content_hash().add(key).add(config::quick_compiler).add(command_line(quick)).hex();
+  if (std::optional<build_result> found = find_in_cache(quick_key)) {
+    found->quick = true;
+    return found;
+  }
+  say_compiling();
   t1 = std::chrono::steady_clock::now();
-  header = header_request{s.cache_dir, include, flags,
-                          content_hash().add(config::cxx_compiler).add(command_line(flags)).add(stamp).hex()};
-  pch = precompiled_header_dir(header, damage, header_error);
-  if (!damage.empty())
-    notes += path + ": note: the cached precompiled vvlib header was damaged (" + damage + "); it was built again\n";
+  header_request quick_pch = quick_header(s.cache_dir, include, stamp);
+  std::string quick_damage, quick_error;
+  std::string header_dir = precompiled_header_dir(quick_pch, quick_damage, quick_error);
+  if (header_dir.empty() || !make_work(quick_key)) return std::nullopt;
+  quick_job job{precompiled_header_file(header_dir, true), include, model_dir, work, part.object, {}};
+  std::istringstream linker(config::model_link_flags);
+  for (std::string w; linker >> w;) job.libraries.push_back(w);
+  std::string lib = vvlib_library_dir();
+  job.libraries.insert(job.libraries.end(), {"-L", lib, "-Wl,-rpath," + lib, "-lvv_formats", "-lpugixml", "-lGL"});
+  std::vector<std::string> argv = quick_command(job);
+  process_result c = run_process(argv);
+  std::error_code ec;
+  if (c.status != 0) {
+    if (unreadable_precompiled_header(c.output)) discard_precompiled_header(header_dir);
+    fs::remove_all(work, ec);
+    return std::nullopt;
+  }
+  r.compile_ms = ms_since(t1);
+  message_sources sources{include, t.cpp, {t.fields.edge, t.fields.vertex, t.fields.mesh}};
+  build_result done = store(quick_key, compiler_messages(c.output, sources), command_line(argv) + "\n");
+  done.quick = done.ok;
+  return done;
+}
+
+// A work folder holding the C++, under the cache's plugins/.
+bool model_builder::make_work(const std::string& build_key) {
   std::error_code ec;
   fs::create_directories(plugins, ec);
   cache::remove_leftovers(plugins);
-  work = plugins + "/tmp-" + key + "-" + cache::unique_id();
+  work = plugins + "/tmp-" + build_key + "-" + cache::unique_id();
   fs::create_directories(work, ec);
   if (ec || !write_file(work + "/model.cpp", t.cpp)) {
     fs::remove_all(work, ec);
-    return failed(plugins, "cannot write to the model cache");
+    return false;
   }
+  return true;
+}
+
+// The precompiled vvlib header, and a work folder holding the C++.
+std::optional<build_result> model_builder::prepare_work() {
+  say_compiling();
+  t1 = std::chrono::steady_clock::now();
+  header = header_request{s.cache_dir, include, flags,
+                          content_hash().add(config::cxx_compiler).add(command_line(flags)).add(stamp).hex(),
+                          config::cxx_compiler, false};
+  if (quick_wanted()) {
+    // The quick builds' header, for the edits to come: on the other core,
+    // while g++ makes its own (a few seconds on one core).
+    header_request quick_pch = quick_header(s.cache_dir, include, stamp);
+    quick_header_made = std::async(std::launch::async, [quick_pch] {
+      std::string damaged, error;
+      return precompiled_header_dir(quick_pch, damaged, error);
+    });
+  }
+  pch = precompiled_header_dir(header, damage, header_error);
+  if (!damage.empty())
+    notes += path + ": note: the cached precompiled vvlib header was damaged (" + damage + "); it was built again\n";
+  if (!make_work(key)) return failed(plugins, "cannot write to the model cache");
   return std::nullopt;
 }
 
@@ -277,15 +359,8 @@ build_result model_builder::compile_and_store() {
   if (s.declarations_apart && !instrumented(flags)) {
     // Shared by the same declarations in any folder, unless a header they
     // include could be found in the model's (compile/shared_declarations).
-    job.declarations = declarations_without_folder(t.declarations, model_dir);
-    job.declarations_key = content_hash()
-                               .add(vvc::version())
-                               .add(config::cxx_compiler)
-                               .add(command_line(flags))
-                               .add(stamp)
-                               .add(declarations_may_read_folder(job.declarations, model_dir) ? model_dir : "")
-                               .add(job.declarations)
-                               .hex();
+    job.declarations = shared_declarations();
+    job.declarations_key = part_key(job.declarations);
     // A new model's part only on a core that would otherwise be idle, or
     // for the edits to come (build_history.hpp, build_cores.hpp).
     job.make_part = s.part_from_the_first_build || compiled_before(s.cache_dir, history_key()) ||
@@ -322,19 +397,27 @@ build_result model_builder::compile_and_store() {
     fs::remove_all(work, ec);
     return r;
   }
+  return store(key, about_model, compiled.commands);
+}
+
+// The compiled work folder published under the key, with what the model
+// is built from and what the compiler said.
+build_result model_builder::store(const std::string& build_key, const std::string& about_model,
+                                  const std::string& commands) {
+  std::error_code ec;
   std::string deps = dependency_list(work + "/model.d", include);
   bool stored = write_file(work + "/deps", deps) && write_file(work + "/warnings", about_model) &&
-                write_file(work + "/command", compiled.commands) &&  // how it was built, for whoever looks
-                cache::write_manifest(work, build_files);            // last: the build is whole
+                write_file(work + "/command", commands) &&  // how it was built, for whoever looks
+                cache::write_manifest(work, build_files);   // last: the build is whole
   // Every build gets a folder of its own, so what a process loaded is never
   // overwritten; the key then names the newest.
-  std::string build = key + "." + cache::unique_id();
+  std::string build = build_key + "." + cache::unique_id();
   if (stored) fs::rename(work, plugins + "/" + build, ec);
   if (!stored || ec) {
     fs::remove_all(work, ec);
     return failed(plugins, "cannot store the compiled model in the cache");
   }
-  cache::publish(plugins, key, build);
+  cache::publish(plugins, build_key, build);
   r.ok = true;
   r.plugin = plugins + "/" + build + "/model.so";
   r.cpp = plugins + "/" + build + "/model.cpp";
@@ -356,7 +439,8 @@ build_result build_unguarded(const std::string& path, const build_settings& s) {
   b.name_the_build();
   // Another process may be compiling this very model: wait, then find its build.
   cache::build_lock lock(b.plugins, b.key);
-  if (std::optional<build_result> done = b.find_in_cache()) return *done;
+  if (std::optional<build_result> done = b.find_in_cache(b.key)) return *done;
+  if (std::optional<build_result> done = b.quick_build()) return *done;
   if (std::optional<build_result> done = b.prepare_work()) return *done;
   return b.compile_and_store();
 }

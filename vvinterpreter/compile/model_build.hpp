@@ -24,6 +24,12 @@ struct build_settings {
   //! and --compile-only: build_history.hpp). An existing part is used
   //! either way.
   bool part_from_the_first_build = false;
+  //! After an edit: when the cache holds the optimised build's declarations'
+  //! part, compile the program unoptimised with clang and link it with the
+  //! part (quick_build.hpp), in about half a second; the optimised build
+  //! is then asked for with quick off. A cached optimised build is used
+  //! first. Also makes clang's precompiled header beside g++'s.
+  bool quick = false;
   //! The most cores a new model's build counts as idle, 0: no limit
   //! (build_cores.hpp). With one, a new model is compiled whole.
   unsigned build_cores = 0;
@@ -43,6 +49,7 @@ struct build_result {
   //! headers of the model's own that the C++ includes (to watch them).
   std::vector<std::string> sources;
   bool cached = false;
+  bool quick = false;  // unoptimised (settings.quick): the optimised build is still to come
   double translate_ms = 0, compile_ms = 0;
 };
 

@@ -12,11 +12,8 @@ namespace fs = std::filesystem;
 
 namespace {
 
-const char* const header_file = "model/model.hpp.gch";
+const char* header_file(bool clang) { return clang ? "model/model.hpp.pch" : "model/model.hpp.gch"; }
 
-}  // namespace
-
-namespace {
 
 // The header the key names now, if it is whole (its damage said and
 // discarded otherwise). Resolved once: another process may publish a new
@@ -54,11 +51,13 @@ std::string precompiled_header_dir(const header_request& r, std::string& damage,
 
   std::string work = folder + "/tmp-" + r.key + "-" + cache::unique_id();
   fs::create_directories(work + "/model", ec);
-  std::vector<std::string> argv = {config::cxx_compiler};
+  std::vector<std::string> argv = {r.compiler.empty() ? std::string(config::cxx_compiler) : r.compiler};
   argv.insert(argv.end(), r.flags.begin(), r.flags.end());
-  argv.insert(argv.end(), {"-x", "c++-header", r.include + "/model/model.hpp", "-o", work + "/" + header_file});
+  // clang: the templates the header instantiates, once here, not in every model.
+  if (r.clang) argv.push_back("-fpch-instantiate-templates");
+  argv.insert(argv.end(), {"-x", "c++-header", r.include + "/model/model.hpp", "-o", work + "/" + header_file(r.clang)});
   process_result made = run_process(argv);
-  if (made.status != 0 || !cache::write_manifest(work, {{header_file, cache::check::size}})) {
+  if (made.status != 0 || !cache::write_manifest(work, {{header_file(r.clang), cache::check::size}})) {
     fs::remove_all(work, ec);
     error = "cannot precompile model/model.hpp:\n" + made.output;
     return "";
@@ -74,13 +73,17 @@ std::string precompiled_header_dir(const header_request& r, std::string& damage,
   return folder + "/" + build;
 }
 
+std::string precompiled_header_file(const std::string& dir, bool clang) { return dir + "/" + header_file(clang); }
+
 void discard_precompiled_header(const std::string& dir) {
   std::error_code ec;
   fs::remove_all(dir, ec);
 }
 
 bool unreadable_precompiled_header(const std::string& compiler_output) {
-  return compiler_output.find("cannot read PCH file") != std::string::npos;
+  for (const char* words : {"PCH file", "AST file"})
+    if (compiler_output.find(words) != std::string::npos) return true;
+  return false;
 }
 
 }  // namespace vvi

@@ -1,6 +1,8 @@
 // The precompiled model/model.hpp every model includes first: built
-// once per cache and set of compiler flags (a few seconds), in the cache's
-// pch/ folder (model_cache.hpp), and checked before each use.
+// once per cache, compiler and set of flags (a few seconds), in the cache's
+// pch/ folder (model_cache.hpp), and checked before each use. g++ finds
+// model/model.hpp.gch on the include path; clang (quick builds,
+// quick_build.hpp) is given model/model.hpp.pch with -include-pch.
 #pragma once
 
 #include <string>
@@ -13,10 +15,15 @@ struct header_request {
   std::string include;             // vvlib's headers
   std::vector<std::string> flags;  // the flags models are compiled with (they must match)
   std::string key;                 // a hash of the compiler, the flags and the headers
+  std::string compiler;            // g++ (config::cxx_compiler), or clang for quick builds
+  bool clang = false;              // model.hpp.pch, its templates instantiated once in it
 };
 
-//! The folder to put first on the include path (it holds
-//! model/model.hpp.gch), built when the cache has no sound one. ""
+//! The header's file in a folder precompiled_header_dir returned.
+std::string precompiled_header_file(const std::string& dir, bool clang);
+
+//! The folder of the header (g++: to put first on the include path, as it
+//! holds model/model.hpp.gch), built when the cache has no sound one. ""
 //! when it cannot be built (`error` says why; models then compile without
 //! it). `damage` says why a cached one was found broken and rebuilt, or "".
 std::string precompiled_header_dir(const header_request& request, std::string& damage, std::string& error);
@@ -25,7 +32,8 @@ std::string precompiled_header_dir(const header_request& request, std::string& d
 //! next precompiled_header_dir builds it afresh.
 void discard_precompiled_header(const std::string& dir);
 
-//! Whether the compiler's output says it could not read a precompiled header.
+//! Whether the compiler's output says it could not read a precompiled
+//! header (g++'s words, or clang's for a damaged or outdated one).
 bool unreadable_precompiled_header(const std::string& compiler_output);
 
 }  // namespace vvi

@@ -1,4 +1,6 @@
 #include "compile/property_messages.hpp"
+
+#include "app/joined_names.hpp"
 #include "compile/text_ends.hpp"
 
 namespace vvi {
@@ -53,12 +55,6 @@ owner owner_of(const std::string& type, const property_fields& f) {
   return {};
 }
 
-std::string listed(const std::vector<std::string>& names) {
-  std::string s;
-  for (const std::string& n : names) s += (s.empty() ? "" : ", ") + n;
-  return s;
-}
-
 }  // namespace
 
 std::string property_message(const std::string& message, const property_fields& fields) {
@@ -77,7 +73,7 @@ std::string property_message(const std::string& message, const property_fields& 
                     (o.has_functions ? "or member function '" : "'") + name + "'";
   if (!suggestion.empty()) out += " (did you mean '" + suggestion + "'?)";
   if (o.fields->empty()) return out + "; it has none (a " + o.block + " block declares them)";
-  return out + "; its properties are: " + listed(*o.fields);
+  return out + "; its properties are: " + joined_names(*o.fields);
 }
 
 }  // namespace vvi

@@ -5,6 +5,7 @@
 
 #include <vv/io/files.hpp>
 
+#include "app/joined_names.hpp"
 #include "control/command_text.hpp"
 #include "runner/output_file.hpp"
 #include "runner/parameter_source.hpp"
@@ -44,12 +45,6 @@ std::vector<std::string> comma_list(const std::string& names) {
   return out;
 }
 
-std::string listed(const std::vector<std::string>& items) {
-  std::string s;
-  for (const std::string& i : items) s += (s.empty() ? "" : ", ") + i;
-  return s;
-}
-
 }  // namespace
 
 model_controller::model_controller(const options& o, model_jobs& jobs, controller_view& view,
@@ -70,6 +65,7 @@ model_controller::model_controller(const options& o, model_jobs& jobs, controlle
 
 model_controller::~model_controller() {
   if (building_) build_.wait();
+  if (optimising_) optimised_.wait();
 }
 
 void model_controller::submit(const command& c) {
@@ -81,6 +77,7 @@ void model_controller::submit(const command& c) {
 void model_controller::poll(double now) {
   now_ = now;
   finish_build();
+  finish_optimising();
   for (;;) {
     if (jobs_.take_finished() && then_) {
       std::function<void(bool)> then = std::move(then_);
@@ -94,8 +91,8 @@ void model_controller::poll(double now) {
 }
 
 bool model_controller::idle() const {
-  return queue_.empty() && !jobs_.busy() && !building_ && !load_ && !loading_ && !replay_ && steps_left_ == 0 &&
-         now_ >= wait_until_ && view_.caught_up();
+  return queue_.empty() && !jobs_.busy() && !building_ && !optimising_ && !load_ && !loading_ && !replay_ &&
+         steps_left_ == 0 && now_ >= wait_until_ && view_.caught_up();
 }
 
 bool model_controller::only_a_job_runs() const {
@@ -272,7 +269,7 @@ void model_controller::event_done(const command& c, bool ok, const std::string& 
   log_.append(c);
   record_.log = log_;
   refresh_facts();
-  if (c.kind == command::reread && !facts_.file_objects.empty()) view_.say("reread " + listed(facts_.file_objects));
+  if (c.kind == command::reread && !facts_.file_objects.empty()) view_.say("reread " + joined_names(facts_.file_objects));
   changed({model_change::changed});
 }
 

@@ -37,6 +37,10 @@ struct controller_policy {
   //! to its last good state (replaying the log). Off (batch): the first
   //! error ends the run (failed()).
   bool restore_after_error = true;
+  //! An edit is first run as a quick build (compile/quick_build.hpp) while
+  //! the optimised build compiles; that is then loaded in its place and
+  //! the log replayed on it. Off (batch): builds come from elsewhere.
+  bool swap_in_optimised = true;
 };
 
 class model_controller {
@@ -70,6 +74,8 @@ class model_controller {
   //! The view has shown what it was asked to (pictures taken, states drawn).
   bool view_caught_up() const { return view_.caught_up(); }
   bool building() const { return building_; }
+  //! The optimised build of the quick build that runs is compiling.
+  bool optimising() const { return optimising_; }
   bool animating() const { return animating_; }
   double job_seconds() const { return jobs_.busy_seconds(); }
   std::string job_what() const { return jobs_.what(); }
@@ -107,6 +113,7 @@ class model_controller {
     bool trying = false;  // a new build: the last good model stays in the record until it is done
     bool keep_error = false;
     bool restore_on_error = true;  // a failed event of the replay: replay again up to it
+    bool goes_on = false;          // the optimised build swapped in: animation and steps asked for go on
   };
   struct replay_state {
     load_plan plan;
@@ -142,6 +149,8 @@ class model_controller {
   // Builds, loads and replays (model_loads.cpp).
   void start_build(bool force);
   void finish_build();
+  void start_optimising();
+  void finish_optimising();
   std::optional<load_plan> plan_for(const build_result& b);
   void begin_load();
   void loaded(bool ok);
@@ -176,6 +185,11 @@ class model_controller {
   bool keep_error_once_ = false;
   bool building_ = false, build_cached_ = false;
   std::future<build_result> build_;
+  // The optimised build beside a quick one, and the build it is for (a
+  // newer build makes it stale: it is then made again for that one).
+  bool optimising_ = false, optimise_again_ = false;
+  unsigned long builds_started_ = 0, optimising_for_ = 0;
+  std::future<build_result> optimised_;
   std::string status_ = "starting", warnings_, failure_;
 };
 

@@ -12,11 +12,50 @@ namespace vvi {
 void model_controller::start_build(bool force) {
   if (building_) return;
   building_ = true;
+  ++builds_started_;
   status_ = force ? "recompiling ..." : "compiling ...";
   view_.build_started();
   controller_view* view = &view_;
   const model_runner* runner = &runner_;
-  build_ = std::async(std::launch::async, [runner, force, view] { return runner->build(force, [view] { view->compiling(); }); });
+  // Recompile asks for the optimised build itself.
+  bool quick = policy_.swap_in_optimised && !force;
+  build_ = std::async(std::launch::async,
+                      [runner, force, view, quick] { return runner->build(force, [view] { view->compiling(); }, quick); });
+}
+
+// The optimised build of the quick build just made, beside its load.
+void model_controller::start_optimising() {
+  if (optimising_) {
+    optimise_again_ = true;  // once the stale one is done
+    return;
+  }
+  optimising_ = true;
+  optimise_again_ = false;
+  optimising_for_ = builds_started_;
+  const model_runner* runner = &runner_;
+  optimised_ = std::async(std::launch::async, [runner] { return runner->build(false, {}, false); });
+}
+
+void model_controller::finish_optimising() {
+  if (!optimising_ || optimised_.wait_for(std::chrono::seconds(0)) != std::future_status::ready) return;
+  optimising_ = false;
+  build_result b = optimised_.get();
+  if (optimise_again_ || optimising_for_ != builds_started_ || building_) {
+    // A newer build came meanwhile: its own optimised build follows it.
+    if (optimise_again_ && !building_) start_optimising();
+    return;
+  }
+  if (!b.ok) {
+    // g++ refused what clang took: its messages; the quick build keeps running.
+    error(b.details.empty() ? b.error : b.details, b.error);
+    status_ = "running an unoptimised build: the optimised one failed";
+    return;
+  }
+  warnings_ = b.warnings;
+  if (b.plugin == record_.plugin || !runner_.model()) return;
+  // The same program, so the same state: its log replayed whatever the
+  // replay setting (a reload of an edit may start afresh; this may not).
+  load_ = load_plan{b.plugin, log_, "swapped in the optimised build of " + o_.model, true, true, true, true};
 }
 
 void model_controller::finish_build() {
@@ -33,6 +72,7 @@ void model_controller::finish_build() {
   warnings_ = b.warnings;
   build_cached_ = b.cached;
   load_ = plan_for(b);
+  if (b.quick && load_) start_optimising();
 }
 
 // What a finished build loads, and with which events.
@@ -55,7 +95,8 @@ std::optional<model_controller::load_plan> model_controller::plan_for(const buil
   event_log log = record_.replay ? log_ : event_log{runner_.parameter_settings(), {}};
   // --resume: the first model goes on from the checkpoint.
   if (first && log.events.empty() && log.resumed_from.empty()) log.resumed_from = o_.resume;
-  return load_plan{b.plugin, log, (first ? "loaded " : "reloaded ") + o_.model + cached,
+  std::string quick = b.quick ? " (unoptimised until its optimised build is ready)" : "";
+  return load_plan{b.plugin, log, (first ? "loaded " : "reloaded ") + o_.model + cached + quick,
                    b.plugin != record_.plugin && !record_.plugin.empty()};
 }
 
@@ -174,9 +215,9 @@ void model_controller::finish_load() {
   record_.log = log_;
   record_.trying.clear();
   record_.replaying = -1;
-  animating_ = false;
-  steps_left_ = 0;
-  status_ = "running";
+  // A swap goes on as the quick build went; a new model waits for the user.
+  if (!r.plan.goes_on) animating_ = false, steps_left_ = 0;
+  status_ = optimising_ ? "running (unoptimised while the optimised build compiles)" : "running";
   if (!r.plan.keep_error && !keep_error_once_) view_.clear_error();
   keep_error_once_ = false;
   refresh_facts();

@@ -3,6 +3,7 @@
 #include <vv/io/output_file.hpp>
 
 #include "app/files.hpp"
+#include "app/joined_names.hpp"
 #include "runner/checkpoint_file.hpp"
 #include "runner/mesh_export.hpp"
 #include "runner/output_file.hpp"
@@ -37,9 +38,10 @@ model_runner::model_runner(const options& o) : o_(o) {
   for (const auto& [name, text] : o.parameter_values) settings_.push_back({name, "", text});
 }
 
-build_result model_runner::build(bool force, std::function<void()> compiling) const {
+build_result model_runner::build(bool force, std::function<void()> compiling, bool quick) const {
   build_settings s = build_settings_for(o_, force);
   s.compiling = std::move(compiling);
+  s.quick = quick;
   return build_model(o_.model, s);
 }
 
@@ -155,12 +157,6 @@ std::size_t model_runner::max_face() const {
 
 namespace {
 
-std::string listed(const std::vector<std::string>& names) {
-  std::string s;
-  for (const std::string& n : names) s += (s.empty() ? "" : ", ") + n;
-  return s;
-}
-
 std::vector<const char*> c_names(const std::vector<std::string>& names) {
   std::vector<const char*> out;
   for (const std::string& n : names) out.push_back(n.c_str());
@@ -252,7 +248,7 @@ std::string model_runner::write_meshes(const std::string& path, const std::vecto
     }
     vv_geometry g{};
     if (const char* e = model_->model().union_geometry(c.data(), c.size(), max_face(), &g)) return e;
-    return export_polygons(g, path, "meshes " + listed(names));
+    return export_polygons(g, path, "meshes " + joined_names(names));
   }
   const vv_mesh_entry* m = model_->mesh(names.empty() ? "" : names[0]);
   if (!m) return o_.model + ": the model has no global mesh to export";

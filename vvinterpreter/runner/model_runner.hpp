@@ -26,7 +26,8 @@ class model_runner {
 
   //! Translates and compiles, or finds the build in the cache. It does not
   //! touch the running model, so it may run beside it on another thread.
-  build_result build(bool force, std::function<void()> compiling = {}) const;
+  //! `quick`: a quick build after an edit, where one can be made (compile/model_build.hpp).
+  build_result build(bool force, std::function<void()> compiling = {}, bool quick = false) const;
 
   //! A fresh instance of a plugin: loaded (every global initialised anew),
   //! started, then stepped `steps` times so a reload comes back to where the

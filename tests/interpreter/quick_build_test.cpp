@@ -1,0 +1,169 @@
+// Quick builds (vvinterpreter/compile/quick_build.hpp): after an edit, the
+// program compiled unoptimised by clang and linked with the optimised
+// build's declarations' part. They must compute what the optimised build
+// computes, name .vvp lines in crash reports, and be replaced by the
+// optimised build in the viewer at the step the model is at.
+//
+// A quick build whose compile fails gives way to g++, whose messages the
+// user is shown: ModelCacheDeclarations.AnEditBelowThePropertyBlocks...
+// checks g++'s words for an error in an edit made with --expect-edits.
+#include <gtest/gtest.h>
+
+#include <chrono>
+#include <cstdlib>
+#include <filesystem>
+#include <sstream>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include "cache_harness.hpp"
+#include "control/model_controller.hpp"
+#include "controller_harness.hpp"
+#include "in_process_options.hpp"
+#include "run_interpreter.hpp"
+#include "test_files.hpp"
+
+namespace fs = std::filesystem;
+
+namespace {
+
+const std::string growing_ring = VV_SOURCE_DIR "/examples/growing_ring.vvp";
+
+//! A copy of `source` as dir/examples/m.vvp, with the files of models/
+//! that examples read (growing_ring's profile).
+std::string copied(const std::string& dir, const std::string& source) {
+  fs::create_directories(dir + "examples");
+  fs::copy(VV_SOURCE_DIR "/models", dir + "models", fs::copy_options::recursive);
+  std::string model = dir + "examples/m.vvp";
+  write(model, test_files::slurp(source));
+  return model;
+}
+
+//! An edit that changes no computation, as a save while modelling does.
+void edit(const std::string& model, const std::string& comment) {
+  write(model, test_files::slurp(model) + "\n// " + comment + "\n");
+}
+
+std::vector<std::string> lines_of(const std::string& text) {
+  std::vector<std::string> out;
+  std::istringstream in(text);
+  for (std::string line; std::getline(in, line);) out.push_back(line);
+  return out;
+}
+
+const std::string quick_note = "(a quick build: unoptimised)";
+
+}  // namespace
+
+// growing_ring has parallel loops (two threads here, even on its few
+// vertices) and grows by floating-point rules: the quick build's export is
+// byte for byte the optimised build's.
+TEST(QuickBuild, AnEditRunsAsAQuickBuildThatExportsTheOptimisedBuildsBytes) {
+  const std::string dir = fresh_dir("quick_same_bytes");
+  const std::string cache = cache_with_header(dir);
+  const std::string model = copied(dir, growing_ring);
+  auto batch = [&](const std::vector<std::string>& extra, const std::string& out) {
+    std::vector<std::string> argv = {"env", "-C", dir, "VV_PARALLEL_GRAIN=1", VV_INTERPRETER, "--cache", cache,
+                                     "--batch", "--threads", "2", "--steps", "20", "--export", dir + out};
+    argv.insert(argv.end(), extra.begin(), extra.end());
+    argv.push_back(model);
+    return test_run::run(argv, 280);
+  };
+  test_run::result first = batch({"--expect-edits"}, "first.vvm");
+  ASSERT_EQ(first.status, 0) << report(first);
+  EXPECT_FALSE(contains(first.out, quick_note)) << report(first);  // nothing to link yet
+
+  edit(model, "a saved edit");
+  test_run::result quick = batch({"--expect-edits"}, "quick.vvm");
+  ASSERT_EQ(quick.status, 0) << report(quick);
+  EXPECT_TRUE(contains(quick.out, quick_note)) << report(quick);
+  test_run::result again = batch({"--expect-edits"}, "again.vvm");  // found in the cache
+  EXPECT_TRUE(contains(again.out, "compiled model found in the cache")) << report(again);
+
+  // Without --expect-edits the edit is compiled optimised, by g++.
+  test_run::result optimised = batch({}, "optimised.vvm");
+  ASSERT_EQ(optimised.status, 0) << report(optimised);
+  EXPECT_FALSE(contains(optimised.out, quick_note)) << report(optimised);
+  EXPECT_TRUE(contains(optimised.out, "compiled in")) << report(optimised);
+
+  const std::string expected = test_files::slurp(dir + "optimised.vvm");
+  ASSERT_FALSE(expected.empty());
+  EXPECT_EQ(test_files::slurp(dir + "quick.vvm"), expected);
+  EXPECT_EQ(test_files::slurp(dir + "again.vvm"), expected);
+  EXPECT_EQ(test_files::slurp(dir + "first.vvm"), expected);  // the edit was a comment
+  // And once the optimised build is cached, --expect-edits runs it.
+  test_run::result cached = batch({"--expect-edits"}, "cached.vvm");
+  EXPECT_TRUE(contains(cached.out, "compiled model found in the cache")) << report(cached);
+  EXPECT_EQ(test_files::slurp(dir + "cached.vvm"), expected);
+}
+
+// Line tables in the quick build too: a crash names the .vvp line.
+TEST(QuickBuild, ACrashInAQuickBuildNamesItsLine) {
+  const std::string dir = fresh_dir("quick_crash");
+  const std::string cache = cache_with_header(dir);
+  const std::string model = copied(dir, VV_TESTS_DIR "/fault_models/crash_in_step2.vvp");
+  // From outside the model's folder: the report names the file by its whole path.
+  test_run::result first = run_in("/", cache, {"--batch", "--expect-edits", "--steps", "1", model});
+  ASSERT_EQ(first.status, 0) << report(first);
+
+  edit(model, "an edit below the line that crashes");
+  test_run::result crashed = run_in("/", cache, {"--batch", "--expect-edits", "--steps", "3", model});
+  EXPECT_EQ(crashed.status, 1) << report(crashed);
+  EXPECT_TRUE(contains(crashed.out, quick_note)) << report(crashed);
+  std::vector<std::string> err = lines_of(crashed.err);
+  ASSERT_GE(err.size(), 2u) << report(crashed);
+  EXPECT_EQ(err[0], "vvinterpreter: " + model + ":23: crashed with SIGSEGV in step 2") << report(crashed);
+  EXPECT_EQ(err[1], "  " + model + ":23 in the step block") << report(crashed);
+}
+
+// The viewer's loop, through the controller: the edit is reloaded as a
+// quick build at once; the optimised build then takes its place, replayed
+// to the same step, and exports the same bytes.
+TEST(QuickBuild, TheOptimisedBuildTakesTheQuickBuildsPlaceAtTheSameStep) {
+  using namespace controller_harness;
+  const std::string dir = fresh_dir("quick_swap");
+  const std::string model = copied(dir, growing_ring);
+  vvi::options o = in_process_options(model);
+  o.cache = cache_with_header(dir);
+  o.batch = false;  // the viewer's builds: the declarations' part from the first one
+  o.quiet = true;
+  recording_view view;
+  recording_jobs jobs{view};
+  vvi::model_controller c(o, jobs, view);
+  auto settle = [&] {
+    for (int i = 0; i < 6000 && !c.idle(); ++i) {
+      c.poll(0);
+      std::this_thread::sleep_for(std::chrono::milliseconds(10));
+    }
+  };
+  auto exported = [&](const std::string& name) {
+    command e = command::with_path(command::export_mesh, dir + name);
+    c.submit(e);
+    settle();
+    return test_files::slurp(dir + name);
+  };
+  c.submit(command::of(command::reload));  // the first build
+  settle();
+  ASSERT_TRUE(c.runner().model()) << (view.errors.empty() ? "" : view.errors.back());
+  c.submit(command::steps(7));
+  settle();
+  const std::string before = exported("before.vvm");
+  ASSERT_FALSE(before.empty());
+
+  edit(model, "a saved edit");
+  view.said.clear();
+  c.submit(command::of(command::reload));
+  settle();
+  ASSERT_EQ(view.said.size(), 2u) << ::testing::PrintToString(view.said);
+  EXPECT_EQ(view.said[0], "reloaded " + model + " (unoptimised until its optimised build is ready)");
+  EXPECT_EQ(view.said[1], "swapped in the optimised build of " + model);
+  EXPECT_TRUE(view.errors.empty()) << view.errors.back();
+  EXPECT_FALSE(c.optimising());
+  EXPECT_EQ(c.facts().steps, 7u);
+  EXPECT_EQ(c.status(), "running");
+  // The plugin now running is g++'s build, not the quick one.
+  std::string command_file = fs::path(c.runner().plugin_path()).parent_path().string() + "/command";
+  EXPECT_FALSE(contains(test_files::slurp(command_file), "-include-pch")) << test_files::slurp(command_file);
+  EXPECT_EQ(exported("after.vvm"), before);
+}

@@ -1,0 +1,42 @@
+// Quick builds, for the first seconds after an edit: the program compiled
+// unoptimised by clang (about half a second where g++ at -O1 takes two),
+// linked with the optimised declarations' part the last build left in the
+// cache (declarations_part.hpp). The viewer runs it at once and swaps in
+// the optimised build when that is ready (control/model_loads.cpp);
+// batch runs with --expect-edits run it as it is.
+//
+// Both builds compute the same numbers: x86-64 has no fused multiply-add
+// without -march, both use the same libm, and the part's code is the
+// optimised build's own. clang's OpenMP runtime (libomp) also serves the
+// part's g++ loops, through its GNU entry points.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "compile/precompiled_header.hpp"
+
+namespace vvi {
+
+//! Whether this interpreter was built with a clang that has OpenMP.
+bool quick_builds_available();
+
+//! The flags of a quick build and of its precompiled header.
+std::vector<std::string> quick_flags(const std::string& include);
+
+//! The precompiled header of quick builds, in the cache's pch/ folder.
+header_request quick_header(const std::string& cache_dir, const std::string& include, const std::string& stamp);
+
+struct quick_job {
+  std::string header_file;             // model.hpp.pch
+  std::string include;                 // vvlib's headers
+  std::string model_dir;               // the model's own headers
+  std::string work;                    // holds model.cpp; model.so and model.d are made there
+  std::string part;                    // the declarations' part's object
+  std::vector<std::string> libraries;  // -L, -l... for the link
+};
+
+//! The one command that compiles the program and links it with the part.
+std::vector<std::string> quick_command(const quick_job& job);
+
+}  // namespace vvi
