@@ -270,8 +270,11 @@ std::optional<build_result> model_builder::find_in_cache(const std::string& buil
 // Anything else, a compile error included, leaves the build to g++, whose
 // messages the user is shown.
 std::optional<build_result> model_builder::quick_build() {
-  if (!quick_wanted() || !s.declarations_apart) return std::nullopt;
+  // --rebuild and Recompile ask for the optimised build itself.
+  if (!quick_wanted() || !s.declarations_apart || s.force) return std::nullopt;
   declarations_part part = find_declarations(s.cache_dir, part_key(shared_declarations()));
+  if (part.state == declarations_part::missing && !part.why.empty())  // a damaged one, removed: g++ makes it again
+    notes += path + ": note: " + part.why + "; it was compiled again\n";
   if (part.state != declarations_part::usable) return std::nullopt;
   std::vector<std::string> quick = quick_flags(include);
   std::string quick_key = content_hash().add(key).add(config::quick_compiler).add(command_line(quick)).hex();

@@ -78,6 +78,7 @@ void model_controller::poll(double now) {
   now_ = now;
   finish_build();
   finish_optimising();
+  swap_in_optimised();
   for (;;) {
     if (jobs_.take_finished() && then_) {
       std::function<void(bool)> then = std::move(then_);
@@ -91,8 +92,8 @@ void model_controller::poll(double now) {
 }
 
 bool model_controller::idle() const {
-  return queue_.empty() && !jobs_.busy() && !building_ && !optimising_ && !load_ && !loading_ && !replay_ &&
-         steps_left_ == 0 && now_ >= wait_until_ && view_.caught_up();
+  return queue_.empty() && !jobs_.busy() && !building_ && !optimising_ && !optimised_build_ && !load_ && !loading_ &&
+         !replay_ && steps_left_ == 0 && now_ >= wait_until_ && view_.caught_up();
 }
 
 bool model_controller::only_a_job_runs() const {

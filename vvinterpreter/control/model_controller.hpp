@@ -151,6 +151,7 @@ class model_controller {
   void finish_build();
   void start_optimising();
   void finish_optimising();
+  void swap_in_optimised();
   std::optional<load_plan> plan_for(const build_result& b);
   void begin_load();
   void loaded(bool ok);
@@ -190,6 +191,7 @@ class model_controller {
   bool optimising_ = false, optimise_again_ = false;
   unsigned long builds_started_ = 0, optimising_for_ = 0;
   std::future<build_result> optimised_;
+  std::optional<build_result> optimised_build_;  // done, to load once no other load is under way
   std::string status_ = "starting", warnings_, failure_;
 };
 

@@ -13,6 +13,7 @@ void model_controller::start_build(bool force) {
   if (building_) return;
   building_ = true;
   ++builds_started_;
+  optimised_build_.reset();  // of the program before this build
   status_ = force ? "recompiling ..." : "compiling ...";
   view_.build_started();
   controller_view* view = &view_;
@@ -52,6 +53,15 @@ void model_controller::finish_optimising() {
     return;
   }
   warnings_ = b.warnings;
+  optimised_build_ = std::move(b);
+}
+
+// Once the quick build has loaded and replayed (its "reloaded" said), and
+// no other load waits, the optimised build takes its place.
+void model_controller::swap_in_optimised() {
+  if (!optimised_build_ || load_ || loading_ || replay_ || building_) return;
+  build_result b = std::move(*optimised_build_);
+  optimised_build_.reset();
   if (b.plugin == record_.plugin || !runner_.model()) return;
   // The same program, so the same state: its log replayed whatever the
   // replay setting (a reload of an edit may start afresh; this may not).
