@@ -192,7 +192,8 @@ int run_model_headless(const options& o) {
   model_controller c(o, jobs, view, {}, controller_policy{false, false});
   view.attach(c);
   // --expect-edits: the modelling loop, so an edit runs as a quick build.
-  build_result b = c.runner().build(false, {}, o.expect_edits);
+  build_result b = c.runner().build(false, {}, o.expect_edits ? model_runner::build_kind::quick_first
+                                                               : model_runner::build_kind::usual);
   if (!b.ok) return fail(b.error);
   if (o.list_params) return list_parameters(o, b);
   report_build(o, b);

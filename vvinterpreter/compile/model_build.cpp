@@ -357,6 +357,7 @@ build_result model_builder::compile_and_store() {
   for (std::string w; linker >> w;) job.libraries.push_back(w);
   job.libraries.insert(job.libraries.end(), {"-L", lib, "-Wl,-rpath," + lib, "-lvv_formats", "-lpugixml", "-lGL"});
   job.work = work;
+  job.niceness = s.in_background ? 10 : 0;
   job.cache_dir = s.cache_dir;
   job.include = include;
   if (s.declarations_apart && !instrumented(flags)) {

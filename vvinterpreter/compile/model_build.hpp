@@ -30,6 +30,10 @@ struct build_settings {
   //! is then asked for with quick off. A cached optimised build is used
   //! first. Also makes clang's precompiled header beside g++'s.
   bool quick = false;
+  //! The optimised build behind a quick one: its compiler runs at a lower
+  //! priority (nice 10), so that the next edit's quick build and the
+  //! running model come first.
+  bool in_background = false;
   //! The most cores a new model's build counts as idle, 0: no limit
   //! (build_cores.hpp). With one, a new model is compiled whole.
   unsigned build_cores = 0;

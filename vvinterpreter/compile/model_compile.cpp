@@ -56,7 +56,7 @@ class compilation {
 
   process_result run(const std::vector<std::string>& argv) {
     out_.commands += command_line(argv) + "\n";
-    return run_process(argv);
+    return run_process(argv, j_.niceness);
   }
 
   compile_outcome whole() {

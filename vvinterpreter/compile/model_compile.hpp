@@ -25,6 +25,7 @@ struct compile_job {
   std::string declarations_key;
   //! No part for the declarations yet: make it now (else compile whole).
   bool make_part = true;
+  int niceness = 0;  // of the compiler's processes (build_settings::in_background)
 };
 
 struct compile_outcome {

@@ -10,7 +10,7 @@
 
 namespace vvi {
 
-process_result run_process(const std::vector<std::string>& argv) {
+process_result run_process(const std::vector<std::string>& argv, int niceness) {
   process_result r;
   int pipe_fds[2];
   if (argv.empty() || pipe(pipe_fds) != 0) {
@@ -31,6 +31,7 @@ process_result run_process(const std::vector<std::string>& argv) {
     // The compiler goes when the interpreter goes (killed, or closed
     // mid-build): no compiler left running on its own.
     prctl(PR_SET_PDEATHSIG, SIGKILL);
+    if (niceness) (void)!nice(niceness);
     dup2(pipe_fds[1], STDOUT_FILENO);
     dup2(pipe_fds[1], STDERR_FILENO);
     close(pipe_fds[0]);

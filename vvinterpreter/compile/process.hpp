@@ -11,7 +11,9 @@ struct process_result {
   std::string output;  // standard output and standard error, interleaved
 };
 
-process_result run_process(const std::vector<std::string>& argv);
+//! `niceness`: added to the child's nice value (a build that may wait for
+//! others, 0: as this process).
+process_result run_process(const std::vector<std::string>& argv, int niceness = 0);
 
 //! The words of a command joined by spaces, as a build's `command` file and
 //! the cache's keys record it.

@@ -19,9 +19,10 @@ void model_controller::start_build(bool force) {
   controller_view* view = &view_;
   const model_runner* runner = &runner_;
   // Recompile asks for the optimised build itself.
-  bool quick = policy_.swap_in_optimised && !force;
+  model_runner::build_kind kind = policy_.swap_in_optimised && !force ? model_runner::build_kind::quick_first
+                                                                      : model_runner::build_kind::usual;
   build_ = std::async(std::launch::async,
-                      [runner, force, view, quick] { return runner->build(force, [view] { view->compiling(); }, quick); });
+                      [runner, force, view, kind] { return runner->build(force, [view] { view->compiling(); }, kind); });
 }
 
 // The optimised build of the quick build just made, beside its load.
@@ -34,7 +35,8 @@ void model_controller::start_optimising() {
   optimise_again_ = false;
   optimising_for_ = builds_started_;
   const model_runner* runner = &runner_;
-  optimised_ = std::async(std::launch::async, [runner] { return runner->build(false, {}, false); });
+  optimised_ = std::async(std::launch::async,
+                          [runner] { return runner->build(false, {}, model_runner::build_kind::behind_quick); });
 }
 
 void model_controller::finish_optimising() {

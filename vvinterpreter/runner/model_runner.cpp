@@ -38,10 +38,11 @@ model_runner::model_runner(const options& o) : o_(o) {
   for (const auto& [name, text] : o.parameter_values) settings_.push_back({name, "", text});
 }
 
-build_result model_runner::build(bool force, std::function<void()> compiling, bool quick) const {
+build_result model_runner::build(bool force, std::function<void()> compiling, build_kind kind) const {
   build_settings s = build_settings_for(o_, force);
   s.compiling = std::move(compiling);
-  s.quick = quick;
+  s.quick = kind == build_kind::quick_first;
+  s.in_background = kind == build_kind::behind_quick;
   return build_model(o_.model, s);
 }
 

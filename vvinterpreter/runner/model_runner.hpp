@@ -26,8 +26,10 @@ class model_runner {
 
   //! Translates and compiles, or finds the build in the cache. It does not
   //! touch the running model, so it may run beside it on another thread.
-  //! `quick`: a quick build after an edit, where one can be made (compile/model_build.hpp).
-  build_result build(bool force, std::function<void()> compiling = {}, bool quick = false) const;
+  //! As usual; an edit's quick build where one can be made; the optimised
+  //! build behind a quick one (compile/model_build.hpp: quick, in_background).
+  enum class build_kind { usual, quick_first, behind_quick };
+  build_result build(bool force, std::function<void()> compiling = {}, build_kind kind = build_kind::usual) const;
 
   //! A fresh instance of a plugin: loaded (every global initialised anew),
   //! started, then stepped `steps` times so a reload comes back to where the
