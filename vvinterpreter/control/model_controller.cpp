@@ -96,6 +96,11 @@ bool model_controller::idle() const {
          !replay_ && steps_left_ == 0 && now_ >= wait_until_ && view_.caught_up();
 }
 
+bool model_controller::only_builds_run() const {
+  return (building_ || optimising_) && queue_.empty() && !jobs_.busy() && !load_ && !loading_ && !replay_ &&
+         !optimised_build_ && steps_left_ == 0 && !animating_;
+}
+
 bool model_controller::only_a_job_runs() const {
   return jobs_.busy() && queue_.empty() && !building_ && !load_ && !loading_ && !replay_ && steps_left_ == 0 &&
          now_ >= wait_until_;

@@ -68,6 +68,9 @@ class model_controller {
   //! Nothing queued, running, building or loading, the view caught up: a
   //! script's next command may go.
   bool idle() const;
+  //! Nothing to do but wait for a build (or the optimised build behind a
+  //! quick one) to finish.
+  bool only_builds_run() const;
   //! Only a job runs (a script's `wait` and `window-screenshot` go beside it).
   bool only_a_job_runs() const;
   bool busy() const { return jobs_.busy(); }

@@ -98,7 +98,9 @@ void draw_scene(viewer_parts& v, int w, int h) {
 void draw_one_frame(viewer_parts& v) {
   model_controller& c = v.controller;
   if (c.idle() && !c.animating() && v.script.done()) v.window.wait_events(0.25);  // wake for events and the file watch
-  else if (c.busy()) v.window.wait_events(0.02);
+  // While the model's code runs or a compiler does, frames at 50 Hz at
+  // most: drawing as fast as it can would take a core from them.
+  else if (c.busy() || c.only_builds_run()) v.window.wait_events(0.02);
   else v.window.wait_events(0);
   double t = now_seconds();
   v.view.watch().check(t, c);
