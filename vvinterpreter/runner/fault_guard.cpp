@@ -376,6 +376,8 @@ void note_writing(const std::string& temporary, const std::string& target) {
   send(std::string(words::writing) + " " + temporary + "\t" + target);
 }
 
+void note_writing_in(const std::string& folder) { send(std::string(words::writing_in) + " " + folder); }
+
 void note_written(const std::string& temporary) {
   for (auto& slot : writing)
     if (temporary == slot) slot[0] = '\0';

@@ -54,6 +54,9 @@ void note_module(const std::string& loaded, const std::string& original);
 //! if this process dies before note_written, the temporary goes (here on
 //! SIGTERM, SIGINT and SIGHUP; by the supervisor on anything else).
 void note_writing(const std::string& temporary, const std::string& target);
+//! Said before the temporary is made in `folder`: if this process is killed
+//! before note_writing, the supervisor still finds what it left there.
+void note_writing_in(const std::string& folder);
 void note_written(const std::string& temporary);
 
 //! Sends one line of free text to the supervisor (the viewer's state).

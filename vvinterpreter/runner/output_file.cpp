@@ -10,6 +10,7 @@ std::string write_output(const std::string& path, const std::function<std::strin
   std::string error, temporary;
   {
     vv::io::output_file out(path);
+    fault_guard::note_writing_in(out.folder_of_temporary());
     if (std::string why = out.make_temporary(); !why.empty()) return path + ": cannot write file: " + why;
     temporary = out.temporary();
     fault_guard::note_writing(temporary, path);

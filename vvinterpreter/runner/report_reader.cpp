@@ -54,6 +54,9 @@ void report_reader::line(const std::string& l) {
   } else if (key == words::module) {
     std::size_t tab = rest.find('\t');
     if (tab != std::string::npos) end_.modules[rest.substr(0, tab)] = rest.substr(tab + 1);
+  } else if (key == words::writing_in) {
+    auto& folders = end_.writing_folders;
+    if (std::find(folders.begin(), folders.end(), rest) == folders.end()) folders.push_back(rest);
   } else if (key == words::writing) {
     std::size_t tab = rest.find('\t');
     if (tab != std::string::npos) end_.writing.emplace_back(rest.substr(tab + 1), rest.substr(0, tab));

@@ -28,6 +28,7 @@ inline constexpr char exit_call[] = "exit";   //!< the model called exit() insid
 
 // Files.
 inline constexpr char module[] = "module";    //!< module LOADED<TAB>ORIGINAL: a plugin's private copy
+inline constexpr char writing_in[] = "writing-in";  //!< writing-in FOLDER (a temporary is about to be made there)
 inline constexpr char writing[] = "writing";  //!< writing TEMPORARY<TAB>TARGET
 inline constexpr char written[] = "written";  //!< written TEMPORARY
 

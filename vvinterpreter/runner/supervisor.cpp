@@ -19,6 +19,8 @@
 #include <optional>
 #include <string>
 
+#include <vv/io/output_file.hpp>
+
 #include "runner/fault_guard.hpp"
 #include "runner/oom_kills.hpp"
 #include "runner/report_reader.hpp"
@@ -319,9 +321,12 @@ class watch {
 };
 
 // The temporaries of files the child did not finish: they are its own
-// (runner/output_file.hpp), named so no other run uses them.
+// (runner/output_file.hpp), named so no other run uses them; and, in the
+// folders it made temporaries in, any its process ID names (it is reaped:
+// they are a dead process's).
 void remove_unfinished_files(const child_end& end) {
   for (const auto& [target, temporary] : end.writing) unlink(temporary.c_str());
+  for (const std::string& folder : end.writing_folders) vv::io::remove_dead_temporaries(folder);
 }
 
 }  // namespace

@@ -55,6 +55,10 @@ struct child_end {
   //! Files the child was writing when it ended (target → temporary); the
   //! temporaries have been removed.
   std::vector<std::pair<std::string, std::string>> writing;
+  //! Folders the child made temporaries in (or was about to): after it
+  //! ended, what it left there is removed too (a kill between making a
+  //! temporary and saying its name).
+  std::vector<std::string> writing_folders;
   //! Kills by the kernel's out-of-memory killer while the child ran (-1:
   //! the system does not say).
   long oom_kills = -1;

@@ -298,7 +298,7 @@ class output_file {
     if (!temporary_.empty()) return "";
     std::string name = detail::name_part(how_ == how::in_place ? target_ : path_);
     std::string ext = detail::extension_part(name);
-    std::string folder = how_ == how::stream ? temporary_folder() : detail::folder_part(target_);
+    std::string folder = folder_of_temporary();
     remove_dead_temporaries(folder);
     std::string stem = detail::name_part(target_);
     stem = stem.substr(0, stem.size() - detail::extension_part(stem).size());
@@ -320,6 +320,11 @@ class output_file {
     return "";
   }
   const std::string& temporary() const { return temporary_; }
+  //! Where make_temporary makes it: a supervisor told so before it exists
+  //! can remove it if this process dies in between.
+  std::string folder_of_temporary() const {
+    return how_ == how::stream ? temporary_folder() : detail::folder_part(target_);
+  }
 
   //! Puts the temporary in place: a rename, or for a device or a FIFO a
   //! copy into it. "" or why not; the temporary is gone either way.
