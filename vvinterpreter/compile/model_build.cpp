@@ -265,6 +265,17 @@ std::optional<build_result> model_builder::find_in_cache(const std::string& buil
   return std::nullopt;
 }
 
+// What a plugin links: the faster linker where there is one, and the
+// polygon formats compiled, from vv_formats (M.readFile("x.obj")).
+std::vector<std::string> model_libraries() {
+  std::vector<std::string> libraries;
+  std::istringstream linker(config::model_link_flags);
+  for (std::string w; linker >> w;) libraries.push_back(w);
+  std::string lib = vvlib_library_dir();
+  libraries.insert(libraries.end(), {"-L", lib, "-Wl,-rpath," + lib, "-lvv_formats", "-lpugixml", "-lGL"});
+  return libraries;
+}
+
 // After an edit, when the optimised build's declarations' part is in the
 // cache: the program at -O0 with clang, linked with it (quick_build.hpp).
 // Anything else, a compile error included, leaves the build to g++, whose
@@ -287,12 +298,11 @@ std::optional<build_result> model_builder::quick_build() {
   header_request quick_pch = quick_header(s.cache_dir, include, stamp);
   std::string quick_damage, quick_error;
   std::string header_dir = precompiled_header_dir(quick_pch, quick_damage, quick_error);
+  if (!quick_damage.empty())
+    notes += path + ": note: the cached precompiled vvlib header of quick builds was damaged (" + quick_damage +
+             "); it was built again\n";
   if (header_dir.empty() || !make_work(quick_key)) return std::nullopt;
-  quick_job job{precompiled_header_file(header_dir, true), include, model_dir, work, part.object, {}};
-  std::istringstream linker(config::model_link_flags);
-  for (std::string w; linker >> w;) job.libraries.push_back(w);
-  std::string lib = vvlib_library_dir();
-  job.libraries.insert(job.libraries.end(), {"-L", lib, "-Wl,-rpath," + lib, "-lvv_formats", "-lpugixml", "-lGL"});
+  quick_job job{precompiled_header_file(header_dir, true), include, model_dir, work, part.object, model_libraries()};
   std::vector<std::string> argv = quick_command(job);
   process_result c = run_process(argv);
   std::error_code ec;
@@ -350,12 +360,8 @@ std::optional<build_result> model_builder::prepare_work() {
 // cache.
 build_result model_builder::compile_and_store() {
   std::error_code ec;
-  // The polygon formats come compiled, from vv_formats (M.readFile("x.obj")).
-  std::string lib = vvlib_library_dir();
   compile_job job;
-  std::istringstream linker(config::model_link_flags);
-  for (std::string w; linker >> w;) job.libraries.push_back(w);
-  job.libraries.insert(job.libraries.end(), {"-L", lib, "-Wl,-rpath," + lib, "-lvv_formats", "-lpugixml", "-lGL"});
+  job.libraries = model_libraries();
   job.work = work;
   job.niceness = s.in_background ? 10 : 0;
   job.cache_dir = s.cache_dir;
