@@ -839,6 +839,95 @@ TEST(MeshLarge, RandomAddRemoveContainsMatchesAModel) {
   EXPECT_NO_THROW(vv::check_invariants(M));
 }
 
+// A subdivision step's meshes hold new vertices, in the slots after all
+// the others; a long model's hold reused slots, below them. The index
+// (dense over a window of slots, or hashed when the members are spread
+// thin) must answer like a set whichever way its window has to move.
+TEST(MeshLarge, MembershipStaysRightAsTheSlotsMoveAboveAndBelow) {
+  G::context ctx;
+  std::mt19937 rng(20261129u);
+  std::vector<V> older;  // kept alive: their slots stay taken
+  for (int i = 0; i < 20000; ++i) older.push_back(ctx.new_vertex());
+
+  Mesh M(ctx);
+  std::vector<V> candidates;
+  std::unordered_set<unsigned> model;
+  std::list<unsigned> order;
+  std::unordered_map<unsigned, std::list<unsigned>::iterator> place;
+  auto add = [&](const V& v) {
+    M.add(v);
+    if (model.insert(v.label()).second) place[v.label()] = order.insert(order.end(), v.label());
+  };
+  auto remove = [&](const V& v) {
+    M.remove(v);
+    if (model.erase(v.label())) {
+      order.erase(place[v.label()]);
+      place.erase(v.label());
+    }
+  };
+  int wrong = 0;
+  auto check = [&](const char* phase) {
+    for (const V& v : candidates)
+      if (M.contains(v) != (model.count(v.label()) != 0)) ++wrong;
+    for (const V& v : older)
+      if (M.contains(v) != (model.count(v.label()) != 0)) ++wrong;
+    EXPECT_EQ(wrong, 0) << phase;
+    EXPECT_EQ(M.size(), model.size()) << phase;
+    EXPECT_TRUE(labels_of(M) == Labels(order.begin(), order.end())) << phase;
+  };
+
+  // 1. New vertices, one after another above everything (dense at once).
+  for (int i = 0; i < 5000; ++i) {
+    candidates.push_back(ctx.new_vertex());
+    add(candidates.back());
+  }
+  check("new vertices");
+  // 2. Older vertices below the window, a few, then many (it moves down).
+  for (int i = 0; i < 50; ++i) add(older[19999 - 7 * i]);
+  check("a few below");
+  for (int i = 0; i < 20000; i += 3) add(older[i]);
+  check("many below");
+  // 3. Removals, and vertices far above (the context grew meanwhile).
+  for (int i = 0; i < 20000; ++i) ctx.new_vertex();
+  for (int i = 0; i < 3000; ++i) remove(candidates[rng() % candidates.size()]);
+  for (int i = 0; i < 300; ++i) {
+    candidates.push_back(ctx.new_vertex());
+    add(candidates.back());
+  }
+  check("removals and far above");
+  // 4. Spread thin: every 50th slot of a much larger range (hashed).
+  Mesh thin(ctx);
+  std::vector<V> spread;
+  for (int i = 0; i < 200000; ++i) {
+    V v = ctx.new_vertex();
+    if (i % 50 == 0) spread.push_back(v), thin.add(v);
+  }
+  for (std::size_t i = 0; i < 300; ++i) thin.add(older[i * 61]);
+  std::size_t thin_wrong = 0;
+  for (std::size_t i = 0; i < spread.size(); ++i)
+    if (!thin.contains(spread[i])) ++thin_wrong;
+  for (std::size_t i = 0; i < older.size(); ++i)
+    if (thin.contains(older[i]) != (i % 61 == 0 && i / 61 < 300)) ++thin_wrong;
+  EXPECT_EQ(thin_wrong, 0u);
+  EXPECT_EQ(thin.size(), spread.size() + 300);
+  // ... and its storage stays within a few dozen bytes a member, not 4 a
+  // slot of the context (880 kB).
+  EXPECT_LT(thin.storage_bytes(), 40 * thin.size());
+  // 5. Slots freed and reused: new vertices now take scattered low slots.
+  M.clear();
+  model.clear(), order.clear(), place.clear();
+  older.resize(1000);
+  candidates.clear();
+  ctx.collect_garbage();
+  for (int i = 0; i < 8000; ++i) {
+    candidates.push_back(ctx.new_vertex());
+    add(candidates.back());
+    if (i % 5 == 0) remove(candidates[rng() % candidates.size()]);
+  }
+  check("reused slots");
+  EXPECT_NO_THROW(vv::check_invariants(M));
+}
+
 // =====================================================================
 // Section 6: forall over a mesh
 // =====================================================================

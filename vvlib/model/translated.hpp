@@ -9,6 +9,7 @@
 
 #include <utility>
 
+#include <vv/detail/inline.hpp>
 #include <vv/edges.hpp>
 #include <vv/mesh.hpp>
 
@@ -47,7 +48,7 @@ const typename Tr::edge_props& edge_bar(const old_vertex<Tr>& a, const vertex<Tr
 
 //! `add v to M;`
 template <class Tr>
-void add_to(const vertex<Tr>& v, mesh<Tr>& m, where w = where::here()) {
+VV_INLINE void add_to(const vertex<Tr>& v, mesh<Tr>& m, where w = where::here()) {
   m.add(v, w);
 }
 //! `remove v from M;`

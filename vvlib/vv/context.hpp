@@ -47,6 +47,7 @@
 #include <string>
 #include <vector>
 
+#include "detail/handle_blocks.hpp"
 #include "detail/inline.hpp"
 #include "detail/neighbourhood.hpp"
 #include "detail/parallel_scope.hpp"
@@ -83,6 +84,8 @@ class context {
   context& operator=(const context&) = delete;
   //! Handles and meshes must not outlive their context.
   ~context() {
+    // From here on, vectors of handles give their storage back to the heap.
+    handle_blocks_.close();
     // Properties may hold handles into this context: release them while the
     // storage is still whole.
     for (std::uint32_t id = 1; id < next_slot_; ++id) {
@@ -199,6 +202,10 @@ class context {
       if (__builtin_expect(counts_apart_, 0)) return count_on_this_thread(id, -1);
     if (--refs_[id] == 0) ++suspects_;
   }
+
+  //! Freed storage of short vectors of handles, for reuse (vertex.hpp's
+  //! allocator); null inside a parallel loop, whose threads would race on it.
+  detail::handle_blocks* handle_blocks() noexcept { return parallel_ ? nullptr : &handle_blocks_; }
 
   //! The shared record handed out when edge records have no fields.
   edge_props& empty_record() noexcept { return empty_record_; }
@@ -322,6 +329,8 @@ class context {
   }
   void free_slot(std::uint32_t id);
 
+  // Before the vertex storage, so that it outlives the properties' vectors.
+  detail::handle_blocks handle_blocks_;
   // Counts and labels are one array each over all slots, not per chunk:
   // every handle copy touches a count, every `p < q` two labels, and no
   // reference to either outlives a call, so they may move when they grow.

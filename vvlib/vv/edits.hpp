@@ -53,6 +53,22 @@ std::uint32_t flag_position(const vertex<Tr>& v, const char* op, const where& w)
   return static_cast<std::uint32_t>(f);
 }
 
+// Why x may not be in the list for v (the first of: null, of another
+// context, v itself). Off the hot path: make's loop tests the three at once.
+template <class Tr>
+[[noreturn, gnu::noinline, gnu::cold]] void refuse_in_make(const vertex<Tr>& v, const vertex<Tr>& x,
+                                                           const where& w) {
+  if (!x) raise(w, "make", [&] { return "the list for " + name_of(v) + " contains the null vertex"; });
+  if (x.ctx() != v.ctx())
+    raise(w, "make", [&] { return name_of(x) + " belongs to another context than " + name_of(v); });
+  raise(w, "make", [&] { return name_of(v) + " cannot be its own neighbour"; });
+}
+
+template <class Tr>
+[[noreturn, gnu::noinline, gnu::cold]] void listed_twice(const vertex<Tr>& v, std::uint32_t id, const where& w) {
+  throw error(w, "make", name_of(vertex<Tr>::from_slot(v.ctx(), id)) + " is listed twice for " + name_of(v));
+}
+
 template <class Tr, class It>
 void make_neighbourhood(const vertex<Tr>& v, It first, It last, const where& w) {
   using entry_traits = typename context<Tr>::entry_traits;
@@ -66,6 +82,8 @@ void make_neighbourhood(const vertex<Tr>& v, It first, It last, const where& w) 
     spilled.resize(n);
     entries = spilled.data();
   }
+  context<Tr>* const ctx = v.ctx();
+  const std::uint32_t self = v.slot();
   std::size_t k = 0;
   // One bit per slot modulo 64: two entries can only be the same vertex
   // when their bits collide, so most lists skip the pairwise search.
@@ -73,34 +91,28 @@ void make_neighbourhood(const vertex<Tr>& v, It first, It last, const where& w) 
   bool maybe_twice = false;
   for (It it = first; it != last; ++it, ++k) {
     const vertex<Tr>& x = static_cast<const vertex<Tr>&>(*it);
-    if (!x) raise(w, "make", [&] { return "the list for " + name_of(v) + " contains the null vertex"; });
-    if (x.ctx() != v.ctx())
-      raise(w, "make", [&] { return name_of(x) + " belongs to another context than " + name_of(v); });
-    if (x == v) raise(w, "make", [&] { return name_of(v) + " cannot be its own neighbour"; });
+    // Null, of another context, or v itself: one test on the common path.
+    if (__builtin_expect(!x || x.ctx() != ctx || x.slot() == self, 0)) refuse_in_make(v, x, w);
     entries[k] = entry_traits::make(x.slot());
     const std::uint64_t bit = std::uint64_t(1) << (x.slot() & 63u);
     maybe_twice |= (seen & bit) != 0;
     seen |= bit;
   }
-  auto duplicate = [&](std::uint32_t id) {
-    throw error(w, "make",
-                name_of(vertex<Tr>::from_slot(v.ctx(), id)) + " is listed twice for " + name_of(v));
-  };
   if (!maybe_twice) {
     // No two entries share a bit: no duplicates.
   } else if (n <= small) {
     for (std::size_t i = 1; i < n; ++i)
       for (std::size_t j = 0; j < i; ++j)
-        if (entry_id(entries[i]) == entry_id(entries[j])) duplicate(entry_id(entries[i]));
+        if (entry_id(entries[i]) == entry_id(entries[j])) listed_twice(v, entry_id(entries[i]), w);
   } else {
     std::vector<std::uint32_t> ids;
     ids.reserve(n);
     for (std::size_t i = 0; i < n; ++i) ids.push_back(entry_id(entries[i]));
     std::sort(ids.begin(), ids.end());
     auto dup = std::adjacent_find(ids.begin(), ids.end());
-    if (dup != ids.end()) duplicate(*dup);
+    if (dup != ids.end()) listed_twice(v, *dup, w);
   }
-  auto& nb = mutable_nb(v);
+  auto& nb = ctx->nb(self);
   nb.assign(entries, static_cast<std::uint32_t>(n));
   nb.set_flag(nb.no_flag);
 }

@@ -23,13 +23,6 @@
 
 namespace vv {
 
-namespace detail {
-template <class Tr, class = void>
-struct has_default_context : std::false_type {};
-template <class Tr>
-struct has_default_context<Tr, std::void_t<decltype(Tr::context())>> : std::true_type {};
-}  // namespace detail
-
 template <class Tr>
 class mesh : public Tr::mesh_props {
  public:
@@ -88,7 +81,7 @@ class mesh : public Tr::mesh_props {
   ~mesh() { release_all(); }
 
   //! `add v to M;` (no effect if v is already a member)
-  void add(const vertex_type& v, where w = where::here()) {
+  VV_INLINE void add(const vertex_type& v, where w = where::here()) {
     if (!v) raise(w, "add", [] { return std::string("cannot add the null vertex to a mesh"); });
     adopt_context(v, w);
     check_unchanging(w, "add");
@@ -226,20 +219,19 @@ class mesh : public Tr::mesh_props {
 
   std::ptrdiff_t find_position(std::uint32_t id) const noexcept { return index_.find(id, order_); }
   // Adds a slot of ctx_ that is not a member.
-  void add_slot(std::uint32_t id) {
+  VV_INLINE void add_slot(std::uint32_t id) {
     ctx_->retain(id);
     order_.push_back(id);
     ++count_;
-    index_.insert(id, order_.size() - 1, order_, count_, slot_bound());
+    index_.insert(id, order_.size() - 1, order_, count_, ctx_->slot_count());
   }
-  std::size_t slot_bound() const noexcept { return ctx_ ? ctx_->slot_count() : 0; }
 
   // Squeeze out holes once they outnumber the members.
   void compact_if_sparse() {
     if (iterating_ > 0 || holes_ < 64 || holes_ < count_) return;
     order_.erase(std::remove(order_.begin(), order_.end(), 0u), order_.end());
     holes_ = 0;
-    index_.rebuild(order_, count_, slot_bound());
+    index_.rebuild(order_, count_);
   }
   void end_iteration() const noexcept {
     if (--iterating_ == 0) const_cast<mesh*>(this)->compact_if_sparse();
@@ -250,7 +242,7 @@ class mesh : public Tr::mesh_props {
     for (std::uint32_t id : o.order_)
       if (id) order_.push_back(id), ctx_->retain(id);
     count_ = order_.size();
-    if (count_) index_.rebuild(order_, count_, slot_bound());
+    if (count_) index_.rebuild(order_, count_);
   }
   void swap_members(mesh& o) noexcept {
     std::swap(ctx_, o.ctx_);

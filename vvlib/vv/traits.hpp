@@ -2,6 +2,8 @@
 // one model), the empty property struct, and forward declarations.
 #pragma once
 
+#include <type_traits>
+
 namespace vv {
 
 //! The property struct of a model that declares no properties of a kind.
@@ -33,6 +35,16 @@ struct traits {
 
 template <class Tr>
 class context;
+
+namespace detail {
+//! Whether the traits name the one context of their model (`Tr::context()`,
+//! as a translated program's do).
+template <class Tr, class = void>
+struct has_default_context : std::false_type {};
+template <class Tr>
+struct has_default_context<Tr, std::void_t<decltype(Tr::context())>> : std::true_type {};
+}  // namespace detail
+
 template <class Tr>
 class vertex;
 template <class Tr>

@@ -7,8 +7,11 @@
 #include <cstddef>
 #include <cstdint>
 #include <functional>
+#include <memory>
+#include <new>
 #include <ostream>
 #include <string>
+#include <utility>
 
 #include "context.hpp"
 #include "error.hpp"
@@ -103,6 +106,13 @@ class vertex {
     id_ = id;
     borrowed_ = true;
   }
+  //! An uncounted handle to slot id, as a prvalue: the parameter it
+  //! initialises is that handle itself, not a counted copy. A parallel
+  //! loop hands each iteration its vertex so (the mesh keeps it alive and
+  //! the collector is paused): no count changes on the loop's threads.
+  VV_INLINE static vertex borrowed(context_type* c, std::uint32_t id) noexcept {
+    return vertex(c, id, borrow_tag{});
+  }
 
   friend bool operator==(const vertex& a, const vertex& b) noexcept {
     return a.id_ == b.id_ && (a.id_ == 0 || a.ctx_ == b.ctx_);
@@ -124,6 +134,8 @@ class vertex {
 
  private:
   vertex(context_type* c, std::uint32_t id) noexcept : ctx_(c), id_(id) {}
+  struct borrow_tag {};
+  vertex(context_type* c, std::uint32_t id, borrow_tag) noexcept : ctx_(c), id_(id), borrowed_(true) {}
   VV_INLINE void drop() noexcept {
     if (id_ && !borrowed_) ctx_->release(id_);
     id_ = 0;
@@ -217,6 +229,71 @@ VV_INLINE old_vertex<Tr> old(const old_vertex<Tr>& v, where = where::here()) {
 }
 
 }  // namespace vv
+
+//! Vectors of a translated program's handles (a face's corners, a cell's
+//! wall) take their short blocks from the context's recycled ones
+//! (detail/handle_blocks.hpp); everything else is operator new's.
+template <class Tr>
+class std::allocator<vv::vertex<Tr>> {
+ public:
+  using value_type = vv::vertex<Tr>;
+  using size_type = std::size_t;
+  using difference_type = std::ptrdiff_t;
+  using propagate_on_container_move_assignment = std::true_type;
+  using is_always_equal = std::true_type;
+  template <class U>
+  struct rebind {
+    using other = std::allocator<U>;
+  };
+
+  allocator() noexcept = default;
+  allocator(const allocator&) noexcept = default;
+  template <class U>
+  allocator(const std::allocator<U>&) noexcept {}
+
+  VV_INLINE value_type* allocate(std::size_t n) {
+    if constexpr (recycles()) {
+      const int c = vv::detail::handle_blocks::class_of(n);
+      if (c >= 0)
+        if (vv::detail::handle_blocks* blocks = Tr::context().handle_blocks())
+          if (void* p = blocks->take(c)) return static_cast<value_type*>(p);
+    }
+    if (n > std::size_t(-1) / sizeof(value_type)) throw std::bad_array_new_length();
+    return static_cast<value_type*>(::operator new(n * sizeof(value_type)));
+  }
+  VV_INLINE void deallocate(value_type* p, std::size_t n) noexcept {
+    if constexpr (recycles()) {
+      const int c = vv::detail::handle_blocks::class_of(n);
+      if (c >= 0)
+        if (vv::detail::handle_blocks* blocks = Tr::context().handle_blocks())
+          if (blocks->keep(p, c)) return;
+    }
+    ::operator delete(p);
+  }
+
+  // libstdc++'s allocator_traits<std::allocator<T>> calls these members,
+  // which std::allocator has in C++17.
+  template <class U, class... A>
+  void construct(U* p, A&&... args) {
+    ::new (static_cast<void*>(p)) U(std::forward<A>(args)...);
+  }
+  template <class U>
+  void destroy(U* p) noexcept {
+    p->~U();
+  }
+  std::size_t max_size() const noexcept { return std::size_t(-1) / sizeof(value_type); }
+
+  friend bool operator==(const allocator&, const allocator&) noexcept { return true; }
+  friend bool operator!=(const allocator&, const allocator&) noexcept { return false; }
+
+ private:
+  // A function, not a constant: the class is instantiated wherever a
+  // vector of handles is declared, in a property struct too, where Tr is
+  // not yet complete and would not yet name its context.
+  static constexpr bool recycles() noexcept {
+    return VV_RECYCLE_HANDLE_BLOCKS && vv::detail::has_default_context<Tr>::value;
+  }
+};
 
 template <class Tr>
 struct std::hash<vv::vertex<Tr>> {

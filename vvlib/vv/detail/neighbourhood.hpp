@@ -22,6 +22,8 @@
 #include <type_traits>
 #include <utility>
 
+#include "inline.hpp"
+
 #ifndef VV_MOVE_RECORDS_ON_EDIT
 #if defined(__SANITIZE_ADDRESS__)
 #define VV_MOVE_RECORDS_ON_EDIT 1
@@ -120,8 +122,7 @@ class neighbourhood {
   void set_flag(std::int32_t f) noexcept { flag_ = f; }
 
   //! Replace the contents by n entries (the flag is left alone).
-  void assign(const Entry* src, std::uint32_t n) {
-    if (src == data() && n == size_) return;
+  VV_INLINE void assign(const Entry* src, std::uint32_t n) {
     if constexpr (!moves_on_edit && std::is_trivially_copyable<Entry>::value) {
       if (n <= K && size_ <= K) {
         // Inline to inline (a `make` of a common valence): a short loop
@@ -133,26 +134,7 @@ class neighbourhood {
         return;
       }
     }
-    if constexpr (moves_on_edit) {
-      Entry* block = allocate(n);
-      std::uninitialized_copy(src, src + n, block);
-      release();
-      set_heap(heap_rep{block, n});
-      size_ = n;
-      return;
-    }
-    destroy_all();
-    if (n > K) {
-      if (is_inline() || heap().cap < n) {
-        release_heap_storage();
-        heap_rep h{allocate(n), n};
-        set_heap(h);
-      }
-    } else if (!is_inline()) {
-      release_heap_storage();
-    }
-    size_ = n;  // mode now matches size: inline iff n <= K
-    std::uninitialized_copy(src, src + n, data());
+    assign_elsewhere(src, n);
   }
 
   //! Insert e before position pos (pos == size() appends).
@@ -199,6 +181,31 @@ class neighbourhood {
   }
 
  private:
+  // assign() where either list is on the heap, or records must move.
+  [[gnu::noinline]] void assign_elsewhere(const Entry* src, std::uint32_t n) {
+    if (src == data() && n == size_) return;
+    if constexpr (moves_on_edit) {
+      Entry* block = allocate(n);
+      std::uninitialized_copy(src, src + n, block);
+      release();
+      set_heap(heap_rep{block, n});
+      size_ = n;
+      return;
+    }
+    destroy_all();
+    if (n > K) {
+      if (is_inline() || heap().cap < n) {
+        release_heap_storage();
+        heap_rep h{allocate(n), n};
+        set_heap(h);
+      }
+    } else if (!is_inline()) {
+      release_heap_storage();
+    }
+    size_ = n;  // mode now matches size: inline iff n <= K
+    std::uninitialized_copy(src, src + n, data());
+  }
+
   struct heap_rep {
     Entry* ptr;
     std::uint32_t cap;

@@ -1,0 +1,208 @@
+// Recycled storage of short vectors of handles (vv/detail/handle_blocks.hpp
+// and the allocator in vv/vertex.hpp): a translated program's vectors of
+// vertices reuse freed blocks of 1, 2, 4 and 8 handles; other sizes, other
+// traits and parallel loops use the heap; the handles stay counted right
+// throughout; a context's destruction frees what it kept.
+//
+// The recycling is turned on here even under AddressSanitizer (where the
+// library leaves it off), so that the sanitizer build checks its logic too.
+// This executable replaces the global operator new and delete to count
+// the blocks in use.
+#define VV_RECYCLE_HANDLE_BLOCKS 1
+
+#include <gtest/gtest.h>
+
+#include <atomic>
+#include <cstdint>
+#include <cstdlib>
+#include <memory>
+#include <new>
+#include <vector>
+
+#include <vv/vv.hpp>
+
+namespace {
+std::atomic<long> blocks_in_use{0};
+std::atomic<long> blocks_made{0};
+}  // namespace
+
+void* operator new(std::size_t n) {
+  if (void* p = std::malloc(n ? n : 1)) {
+    ++blocks_in_use;
+    ++blocks_made;
+    return p;
+  }
+  throw std::bad_alloc();
+}
+// Not inlined: where GCC sees free() called on what the (not inlined)
+// operator new returned, it warns of a mismatched pair (at -O1).
+[[gnu::noinline]] void operator delete(void* p) noexcept {
+  if (p) --blocks_in_use;
+  std::free(p);
+}
+[[gnu::noinline]] void operator delete(void* p, std::size_t) noexcept {
+  if (p) --blocks_in_use;
+  std::free(p);
+}
+
+namespace {
+
+struct props {
+  double value = 0;
+  // A wall of handles in the properties, as a tissue model's cells have.
+  std::vector<vv::vertex<struct model_traits>> wall;
+};
+
+// As vvc writes a translated program's traits: they name the one context.
+struct model_traits : vv::traits<props> {
+  static vv::context<model_traits>& context();
+};
+// A translated program's context is a global object, which its traits
+// still name while it is destroyed (its properties' vectors are freed
+// then): so is this one, until its destructor has returned.
+vv::context<model_traits>* the_context = nullptr;
+vv::context<model_traits>& model_traits::context() { return *the_context; }
+void make_context() { the_context = new vv::context<model_traits>(); }
+void destroy_context() {
+  delete the_context;
+  the_context = nullptr;
+}
+
+using vertex = vv::vertex<model_traits>;
+using mesh = vv::mesh<model_traits>;
+
+// Each test gets a fresh model context.
+class HandleBlocks : public ::testing::Test {
+ protected:
+  void SetUp() override { make_context(); }
+  void TearDown() override { destroy_context(); }
+  vv::context<model_traits>& ctx() { return *the_context; }
+};
+
+static_assert(vv::detail::has_default_context<model_traits>::value);
+static_assert(!vv::detail::has_default_context<vv::traits<props>>::value);
+
+TEST_F(HandleBlocks, AFreedBlockOfEachRecycledSizeIsHandedOutAgain) {
+  vertex v = ctx().new_vertex();
+  for (std::size_t n : {1u, 2u, 4u, 8u}) {
+    const vertex* first;
+    {
+      std::vector<vertex> corners(n, v);
+      first = corners.data();
+    }
+    const long made = blocks_made;
+    std::vector<vertex> again(n, v);
+    EXPECT_EQ(again.data(), first) << n << " handles";
+    EXPECT_EQ(blocks_made, made) << "a vector of " << n << " handles came from the heap";
+  }
+}
+
+TEST_F(HandleBlocks, AGrowingVectorOfHandlesReachesTheHeapOnlyBeyondEight) {
+  vertex v = ctx().new_vertex();
+  {
+    // The first time, each size comes from the heap once.
+    std::vector<vertex> corners;
+    for (int i = 0; i < 8; ++i) corners.push_back(v);
+  }
+  const long made = blocks_made;
+  for (int round = 0; round < 100; ++round) {
+    std::vector<vertex> corners;
+    for (int i = 0; i < 8; ++i) corners.push_back(v);
+  }
+  EXPECT_EQ(blocks_made, made);
+  std::vector<vertex> longer(9, v);
+  EXPECT_EQ(blocks_made, made + 1);
+}
+
+TEST_F(HandleBlocks, OtherSizesAndOtherTraitsUseTheHeap) {
+  vertex v = ctx().new_vertex();
+  // Three handles: not a recycled size. Whatever the heap does with the
+  // block, the recycled 4-handle block kept before stays kept.
+  const vertex* four;
+  {
+    std::vector<vertex> corners(4, v);
+    four = corners.data();
+  }
+  {
+    std::vector<vertex> three(3, v);
+    EXPECT_NE(three.data(), four);
+  }
+  std::vector<vertex> corners(4, v);
+  EXPECT_EQ(corners.data(), four);
+
+  // A library user's traits name no context: nothing to recycle into.
+  using plain = vv::graph<props>;
+  plain::context other;
+  plain::vertex w = other.new_vertex();
+  std::vector<plain::vertex> list(4, w);
+  EXPECT_EQ(list.size(), 4u);
+  EXPECT_NE(static_cast<const void*>(list.data()), static_cast<const void*>(four));
+}
+
+TEST_F(HandleBlocks, HandlesInRecycledBlocksAreCountedRight) {
+  mesh S;
+  std::vector<vertex> kept;
+  for (int i = 0; i < 100; ++i) kept.push_back(ctx().new_vertex());
+  // Growing vectors (1, 2, 4, 8, then the heap) made and freed many times.
+  for (int round = 0; round < 50; ++round) {
+    std::vector<vertex> corners;
+    for (int i = 0; i < 12; ++i) corners.push_back(kept[(round + i) % kept.size()]);
+    EXPECT_EQ(corners[11], kept[(round + 11) % kept.size()]);
+  }
+  // Only `kept` holds them: dropping it frees them all.
+  for (const vertex& v : kept) EXPECT_EQ(ctx().refs(v.slot()), 1u);
+  kept.clear();
+  EXPECT_EQ(ctx().collect_garbage(), 100u);
+  EXPECT_EQ(ctx().live_vertices(), 0u);
+}
+
+TEST_F(HandleBlocks, ParallelLoopsAllocateAndFreeVectorsOnTheirThreads) {
+  ctx().threads = 2;
+  mesh S;
+  std::vector<vertex> ring;
+  constexpr int n = 4096;
+  for (int i = 0; i < n; ++i) {
+    vertex v = ctx().new_vertex();
+    v->value = i;
+    S.add(v);
+    ring.push_back(v);
+  }
+  for (int i = 0; i < n; ++i) vv::make_nb(ring[i], {ring[(i + 1) % n], ring[(i + n - 1) % n]});
+  vv::synchronise(S);
+  // Each iteration collects its neighbours into a vector of its own (1, 2
+  // and 4 handles) on whichever thread runs it.
+  vv::parallel_for_each(S, [](vertex v) {
+    std::vector<vertex> around;
+    for (vertex x : vv::each(vv::old(v))) around.push_back(x);
+    around.push_back(v);
+    around.push_back(v);
+    double sum = 0;
+    for (const vertex& x : around) sum += vv::old(x)->value;
+    v->value = sum;
+  });
+  for (int i = 0; i < n; ++i)
+    EXPECT_EQ(ring[i]->value, ((i + 1) % n) + ((i + n - 1) % n) + 2.0 * i) << "vertex " << i;
+  // Their counts came back to what they were: the ring and the mesh.
+  for (const vertex& v : ring) EXPECT_EQ(ctx().refs(v.slot()), 2u);
+}
+
+TEST_F(HandleBlocks, TheContextFreesWhatItKeptAndWhatThePropertiesHold) {
+  // Vertices whose properties hold walls of handles, and kept blocks of
+  // every size, when the context goes: every block made since it was made
+  // is freed.
+  destroy_context();
+  const long before = blocks_in_use;
+  make_context();
+  std::vector<vertex> cells;
+  for (int i = 0; i < 10; ++i) cells.push_back(ctx().new_vertex());
+  for (int i = 0; i < 10; ++i)
+    for (int k = 0; k <= i; ++k) cells[i]->wall.push_back(cells[(i + k) % 10]);
+  for (std::size_t n : {1u, 2u, 4u, 8u}) std::vector<vertex> freed(n, cells[0]);
+  EXPECT_EQ(cells[9]->wall.size(), 10u);
+  std::vector<vertex>().swap(cells);  // its own block too
+  EXPECT_GT(blocks_in_use, before);
+  destroy_context();
+  EXPECT_EQ(blocks_in_use, before);
+}
+
+}  // namespace
