@@ -146,6 +146,33 @@ TEST(ParallelLoop, KeepsReferenceCountsRightWhenHandlesAreCopiedOnSeveralThreads
   EXPECT_EQ(t.ctx.live_vertices(), 0u);
 }
 
+// Each iteration's vertex is handed to the body uncounted (the mesh keeps
+// it alive); what the body keeps of it, or puts in its place, is counted.
+TEST(ParallelLoop, TheLoopsVertexKeptOrReplacedByTheBodyIsCounted) {
+  torus t(100);
+  t.ctx.threads = 2;
+  ASSERT_EQ(vv::parallel_threads(t.S), 2u);
+  vertex hub = t.at[0];
+  vv::parallel_for_each(t.S, [&](vertex v) {
+    v->partner = v;  // kept: counted
+    vertex keep = v;
+    v = hub;  // replaced: hub counted while the body holds it
+    keep->value = v == hub ? 1 : 0;
+  });
+  // Each vertex: the mesh, the table `at`, its own partner; hub: `hub` too.
+  for (const vertex& v : t.at) {
+    ASSERT_EQ(t.ctx.refs(v.slot()), v == hub ? 4u : 3u) << vv::name_of(v);
+    ASSERT_EQ(v->partner, v);
+    ASSERT_EQ(v->value, 1.0);
+  }
+  vv::parallel_for_each(t.S, [](const vertex& v) { v->partner = vertex(); });
+  for (const vertex& v : t.at) ASSERT_EQ(t.ctx.refs(v.slot()), v == hub ? 3u : 2u);
+  t.S.clear();
+  t.at.clear();
+  hub = vertex();
+  EXPECT_EQ(t.ctx.collect_garbage(), 10000u);
+}
+
 TEST(ParallelLoop, RefusesAnEditNamingItsLineAndTheLoops) {
   torus t(40);
   t.ctx.threads = 2;

@@ -40,7 +40,10 @@ void parallel_for_each(const mesh<Tr>& m, Fn&& fn, where w = where::here()) {
   context<Tr>* ctx = m.ctx();
   if (!ctx) return;  // no context: no member
   const unsigned team = detail::team_size(*ctx, m.slots().size());
-  detail::for_each_member(*ctx, m.slots(), team, w, [&](vertex<Tr> v, unsigned) { fn(std::move(v)); });
+  // Each iteration's vertex is a borrowed handle (vertex::borrowed), passed
+  // on as one: a body taking `vertex v` by value counts nothing.
+  detail::for_each_member(*ctx, m.slots(), team, w,
+                          [&](const vertex<Tr>& v, unsigned) { fn(vertex<Tr>::borrowed(v.ctx(), v.slot())); });
 }
 //! The translated form of `parallel forall v in M`: the loop's line first.
 template <class Tr, class Fn>

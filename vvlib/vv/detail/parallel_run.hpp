@@ -169,7 +169,7 @@ void for_each_member(context<Tr>& ctx, const std::vector<std::uint32_t>& slots, 
   const std::size_t n = slots.size();
   if (ctx.parallel_loop()) {
     for (std::size_t pos = 0; pos < n; ++pos)
-      if (std::uint32_t id = slots[pos]) fn(vertex<Tr>::from_slot(&ctx, id), 0u);
+      if (std::uint32_t id = slots[pos]) fn(vertex<Tr>::borrowed(&ctx, id), 0u);
     return;
   }
   parallel_loop loop{w};
@@ -183,7 +183,7 @@ void for_each_member(context<Tr>& ctx, const std::vector<std::uint32_t>& slots, 
       std::uint32_t id = slots[pos];
       if (!id) continue;
       watch.begin(id);
-      fn(vertex<Tr>::from_slot(&ctx, id), 0u);
+      fn(vertex<Tr>::borrowed(&ctx, id), 0u);
       check_strict_iteration(ctx, loop, now);
     }
     return;
@@ -191,11 +191,11 @@ void for_each_member(context<Tr>& ctx, const std::vector<std::uint32_t>& slots, 
   parallel_scope<Tr> scope(ctx, loop);
   if (team <= 1) {
     for (std::size_t pos = 0; pos < n; ++pos)
-      if (std::uint32_t id = slots[pos]) fn(vertex<Tr>::from_slot(&ctx, id), 0u);
+      if (std::uint32_t id = slots[pos]) fn(vertex<Tr>::borrowed(&ctx, id), 0u);
     return;
   }
   run_on_team(ctx, n, team, [&](std::size_t pos, unsigned thread) {
-    if (std::uint32_t id = slots[pos]) fn(vertex<Tr>::from_slot(&ctx, id), thread);
+    if (std::uint32_t id = slots[pos]) fn(vertex<Tr>::borrowed(&ctx, id), thread);
   });
 }
 
