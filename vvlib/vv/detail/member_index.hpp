@@ -71,7 +71,7 @@ class member_index {
     high_ = 0;
     for (std::uint32_t id : order)
       if (id) low_ = std::min(low_, id), high_ = std::max(high_, id);
-    if (members >= dense_min && dense_enough(members)) make_dense(order);
+    if (members >= dense_min && dense_enough(members)) make_dense(order, false);
     else rehash(order, members);
   }
 
@@ -109,7 +109,7 @@ class member_index {
       if (!dense_enough(members)) return rehash(order, members);
       return widen_to(id, pos, order, slots);
     }
-    if (members >= dense_min && dense_enough(members)) return make_dense(order);
+    if (members >= dense_min && dense_enough(members)) return make_dense(order, true);
     if (members * 2 > table_.size()) return rehash(order, members);
     put_hashed(id, pos, order);
   }
@@ -118,12 +118,13 @@ class member_index {
     return static_cast<std::size_t>((id * 2654435769u) >> (32 - bits));
   }
 
-  // A window over [low_, high_] with room for half as many slots again on
-  // each side, filled from order: new vertices take the next slots, and
-  // reused ones lie below.
-  void make_dense(const order_list& order) {
+  // A window over [low_, high_], filled from order. A mesh still growing
+  // gets room for half as many slots again on each side (new vertices take
+  // the next slots, reused ones lie below); a rebuilt one (a copy, a
+  // compaction) gets just its span.
+  void make_dense(const order_list& order, bool growing) {
     dense_ = true;
-    const std::uint32_t room = (high_ - low_) / 2 + 1;
+    const std::uint32_t room = growing ? (high_ - low_) / 2 + 1 : 0;
     base_ = low_ > room ? low_ - room : 0;
     table_.assign(std::size_t(high_ - base_) + 1 + room, 0u);
     for (std::size_t pos = 0; pos < order.size(); ++pos)
@@ -136,7 +137,7 @@ class member_index {
   // at a time is copied O(log n) times); downwards it is made anew with
   // room below.
   void widen_to(std::uint32_t id, std::size_t pos, const order_list& order, std::size_t slots) {
-    if (low_ < base_) return make_dense(order);
+    if (low_ < base_) return make_dense(order, true);
     const std::size_t needed = std::max<std::size_t>(std::size_t(high_ - base_) + 1, slots - base_);
     table_.resize(std::max(needed, table_.size() + table_.size() / 2), 0u);
     table_[id - base_] = static_cast<std::uint32_t>(pos + 1);
