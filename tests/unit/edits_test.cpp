@@ -82,7 +82,21 @@ TEST_F(Edits, MakeWithTargetListedIsAnError) {
   vv::flag_in(c, v);
   nb_state before = state_of(v);
   EXPECT_TRUE(throws_vv_error([&] { vv::make_nb(v, {a, v, x}); },
-                              {"make", "vertex 1", "edits_test.cpp"}));
+                              {"make", "vertex 1 cannot be its own neighbour", "edits_test.cpp"}));
+  EXPECT_EQ(state_of(v), before);
+  EXPECT_TRUE(ok());
+}
+
+TEST_F(Edits, MakeWithAVertexOfAnotherContextIsAnError) {
+  vv::flag_in(c, v);
+  nb_state before = state_of(v);
+  G::context other;
+  V stranger = other.new_vertex();
+  EXPECT_TRUE(throws_vv_error([&] { vv::make_nb(v, {a, stranger, x}); },
+                              {"make", "vertex 1 belongs to another context than vertex 1", "edits_test.cpp"}));
+  // Of the three faults, the first in the list's order is named.
+  EXPECT_TRUE(throws_vv_error([&] { vv::make_nb(v, {stranger, nullptr, v}); }, {"another context"}));
+  EXPECT_TRUE(throws_vv_error([&] { vv::make_nb(v, {a, nullptr, stranger}); }, {"contains the null vertex"}));
   EXPECT_EQ(state_of(v), before);
   EXPECT_TRUE(ok());
 }
