@@ -14,7 +14,7 @@ target_compile_definitions(oracle_peers PUBLIC
   VV_INTERPRETER="$<TARGET_FILE:vvinterpreter>" VV_TEST_CACHE="${example_cache}"
   VV_SOURCE_DIR="${PROJECT_SOURCE_DIR}" VV_ORACLE_MODELS="${CMAKE_CURRENT_BINARY_DIR}/oracle-models")
 target_compile_options(oracle_peers PRIVATE $<$<CONFIG:Debug>:-O1>
-  -Wno-maybe-uninitialized)  # OpenMesh's PropertyT::push_back trips GCC 12
+  $<$<CXX_COMPILER_ID:GNU>:-Wno-maybe-uninitialized>)  # OpenMesh's PropertyT::push_back trips GCC 12
 vv_strict_warnings(oracle_peers)
 
 file(GLOB oracle_tests CONFIGURE_DEPENDS ${CMAKE_CURRENT_SOURCE_DIR}/oracle_*_test.cpp)

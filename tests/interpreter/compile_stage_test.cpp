@@ -109,6 +109,24 @@ TEST(PropertyMessages, MisspeltEdgeAndMeshPropertiesListTheirOwn) {
             "properties are: generation");
 }
 
+// clang 14's words for the same misspelt members.
+TEST(PropertyMessages, ClangsWordsAreRewrittenAlike) {
+  EXPECT_EQ(vvi::property_message("error: no member named 'position' in 'vv_vertex_props'", fields),
+            "error: the vertex has no property 'position'; its properties are: pos, c");
+  EXPECT_EQ(vvi::property_message("error: no member named 'creasy' in 'vv_edge_props'; did you mean 'crease'?", fields),
+            "error: the half-edge record has no property 'creasy' (did you mean 'crease'?); its properties are: "
+            "crease");
+  EXPECT_EQ(vvi::property_message("error: no member named 'q' in 'const vv_vertex_props'", fields),
+            "error: the vertex has no property 'q'; its properties are: pos, c");
+  EXPECT_EQ(vvi::property_message(
+                "error: no member named 'generations' in 'vv::mesh<vv_traits>'; did you mean 'generation'?", fields),
+            "error: the mesh has no property or member function 'generations' (did you mean 'generation'?); its "
+            "properties are: generation");
+  EXPECT_EQ(vvi::property_message("error: no member named 'z' in 'util::Point<double>'", fields), "");
+  EXPECT_EQ(vvi::property_message("error: no member named 'pos' in 'vv::vertex<vv_traits>'", fields), "");
+  EXPECT_EQ(vvi::property_message("error: no member named 'pos' in namespace 'vv'", fields), "");
+}
+
 TEST(PropertyMessages, AKindWithoutABlockHasNone) {
   EXPECT_EQ(vvi::property_message("error: 'struct vv_vertex_props' has no member named 'pos'", {}),
             "error: the vertex has no property 'pos'; it has none (a vertex block declares them)");
@@ -134,6 +152,33 @@ TEST(CompilerMessages, MisspeltPropertyIsRewrittenAtItsVvpLine) {
             vvp + ":2:21: error: the vertex has no property 'position'; its properties are: pos\n"
                   "  start { vertex v; v$position = 1; }\n"
                   "                      ^\n");
+}
+
+// clang quotes the generated C++ under its message, with a caret and a
+// fix-it, and a note where the suggested member is declared; it ends with
+// a count. The message moves to the .vvp column and quotes the .vvp line;
+// the note quotes the property block's line.
+TEST(CompilerMessages, ClangsExcerptsAndCountAreReplacedByTheVvpLines) {
+  std::string dir = fresh_dir("misspelt_property_clang");
+  std::string vvp = dir + "/p.vvp";
+  write(vvp, "vertex { double pos; };\nstart { vertex v; v$poss = 1; }\n");
+  std::string cpp = "#line 1 \"" + vvp + "\"\nstruct vv_vertex_props { double pos{}; };\nvoid vv_block_start() { vertex v; "
+                    "v.props().poss = 1; }\n";
+  std::string output = vvp + ":2:45: error: no member named 'poss' in 'vv_vertex_props'; did you mean 'pos'?\n"
+                             "void vv_block_start() { vertex v; v.props().poss = 1; }\n"
+                             "                                  ~~~~~~~~~ ^~~~\n"
+                             "                                            pos\n" +
+                       vvp + ":1:33: note: 'pos' declared here\n"
+                             "struct vv_vertex_props { double pos{};\n"
+                             "                                ^\n"
+                             "1 error generated.\n";
+  EXPECT_EQ(vvi::compiler_messages(output, {"/nowhere/vvlib", cpp, {{}, {"pos"}, {}}}),
+            vvp + ":2:21: error: the vertex has no property 'poss' (did you mean 'pos'?); its properties are: pos\n"
+                  "  start { vertex v; v$poss = 1; }\n"
+                  "                      ^\n" +
+            vvp + ":1:17: note: 'pos' declared here\n"
+                  "  vertex { double pos; };\n"
+                  "                  ^\n");
 }
 
 // ---------------------------------------------------------------------------

@@ -21,6 +21,7 @@
 #include <vector>
 
 #include "cache_harness.hpp"
+#include "model_compiler.hpp"
 #include "run_interpreter.hpp"
 #include "test_files.hpp"
 
@@ -50,7 +51,7 @@ const std::string found_in_cache = ": compiled model found in the cache\n";
 
 // The warning of tiny_model, under the name `typed`.
 std::string tiny_warning(const std::string& typed) {
-  return typed + ": In function 'void vv_block_start()':\n" + typed +
+  return model_compiler::in_function(typed) + typed +
          ":3:13: warning: unused variable 'unused_x' [-Wunused-variable]\n"
          "  start { int unused_x = 1; std::printf(\"model ran: %d\\n\", 6 * 7); }\n"
          "              ^\n";
@@ -130,7 +131,8 @@ TEST(ModelCache, TruncatedPrecompiledHeaderIsBuiltAgainWithANote) {
   fs::copy(std::string(VV_TEST_CACHE) + "/pch", cache + "/pch", fs::copy_options::recursive | fs::copy_options::copy_symlinks);
   int truncated = 0;
   for (const auto& e : fs::recursive_directory_iterator(cache + "/pch"))
-    if (e.is_regular_file() && e.path().filename() == "model.hpp.gch") fs::resize_file(e.path(), 1000000), ++truncated;
+    if (e.is_regular_file() && e.path().filename() == model_compiler::precompiled_header)
+      fs::resize_file(e.path(), 1000000), ++truncated;
   ASSERT_GT(truncated, 0);
 
   const std::string model = dir + "t.vvp";
@@ -138,7 +140,7 @@ TEST(ModelCache, TruncatedPrecompiledHeaderIsBuiltAgainWithANote) {
   test_run::result built = run_in(dir, cache, {"--batch", model});
   EXPECT_EQ(built.status, 0) << report(built);
   const std::string note = model + ": note: the cached precompiled vvlib header was damaged "
-                                   "(model/model.hpp.gch has 1000000 bytes, ";
+                                   "(model/" + model_compiler::precompiled_header + " has 1000000 bytes, ";
   EXPECT_EQ(built.err.rfind(note, 0), 0u) << report(built);
   EXPECT_TRUE(contains(built.err, " expected); it was built again\n" + tiny_warning(model))) << report(built);
   EXPECT_TRUE(contains(built.out, "model ran: 42\n")) << report(built);
@@ -369,7 +371,9 @@ TEST(ModelCacheDeclarations, AnEditBelowThePropertyBlocksCompilesOnlyTheProgram)
   write(model, head + "start { vertex v; v$h = no_such_value; }\n");
   test_run::result broken = run_in(dir, cache, {"--batch", "--expect-edits", model});
   EXPECT_EQ(broken.status, 1) << report(broken);
-  EXPECT_TRUE(contains(broken.err, model + ":4:25: error: 'no_such_value' was not declared in this scope")) << report(broken);
+  const std::string undeclared = model_compiler::clang ? "use of undeclared identifier 'no_such_value'"
+                                                       : "'no_such_value' was not declared in this scope";
+  EXPECT_TRUE(contains(broken.err, model + ":4:25: error: " + undeclared)) << report(broken);
 }
 
 // Declarations that keep state of their own (here a static counter that

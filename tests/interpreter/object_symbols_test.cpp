@@ -9,6 +9,7 @@
 
 #include "compile/object_symbols.hpp"
 #include "compile/process.hpp"
+#include "model_compiler.hpp"
 #include "test_files.hpp"
 
 namespace fs = std::filesystem;
@@ -21,9 +22,10 @@ std::string object_of(const std::string& name, const std::string& source) {
   std::string dir = test_files::scratch_dir() + "object_symbols/";
   fs::create_directories(dir);
   std::ofstream(dir + name + ".cpp") << source;
-  vvi::process_result r = vvi::run_process({VV_CXX, "-std=c++17", "-O1", "-fPIC", "-fvisibility=hidden",
-                                            "-fvisibility-inlines-hidden", "-fno-gnu-unique", "-c", "-o",
-                                            dir + name + ".o", dir + name + ".cpp"});
+  std::vector<std::string> argv = {VV_CXX, "-std=c++17", "-O1", "-fPIC", "-fvisibility=hidden",
+                                   "-fvisibility-inlines-hidden", "-c", "-o", dir + name + ".o", dir + name + ".cpp"};
+  if (!model_compiler::clang) argv.push_back("-fno-gnu-unique");  // clang makes no unique symbols
+  vvi::process_result r = vvi::run_process(argv);
   EXPECT_EQ(r.status, 0) << r.output;
   return dir + name + ".o";
 }

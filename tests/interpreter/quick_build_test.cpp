@@ -14,12 +14,14 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <set>
 #include <sstream>
 #include <string>
 #include <thread>
 #include <vector>
 
 #include "cache_harness.hpp"
+#include "model_compiler.hpp"
 #include "control/model_controller.hpp"
 #include "controller_harness.hpp"
 #include "in_process_options.hpp"
@@ -164,9 +166,12 @@ TEST(QuickBuild, TheOptimisedBuildTakesTheQuickBuildsPlaceAtTheSameStep) {
   EXPECT_FALSE(c.optimising());
   EXPECT_EQ(c.facts().steps, 7u);
   EXPECT_EQ(c.status(), "running");
-  // The plugin now running is g++'s build, not the quick one.
+  // The plugin now running is g++'s build, not the quick one. (A host
+  // built with clang gives both builds a precompiled header.)
   std::string command_file = fs::path(c.runner().plugin_path()).parent_path().string() + "/command";
-  EXPECT_FALSE(contains(test_files::slurp(command_file), "-include-pch")) << test_files::slurp(command_file);
+  if (!model_compiler::clang) {
+    EXPECT_FALSE(contains(test_files::slurp(command_file), "-include-pch")) << test_files::slurp(command_file);
+  }
   EXPECT_EQ(exported("after.vvm"), before);
 }
 
@@ -182,30 +187,42 @@ TEST(QuickBuild, ADamagedQuickHeaderIsBuiltAgain) {
                "start { vertex v; v$h = 1.5; add v to S; std::printf(\"h=%g in %zu\\n\", v$h, S.size()); }\n");
   test_run::result first = run_in(dir, cache, {"--batch", "--expect-edits", model});
   ASSERT_EQ(first.status, 0) << report(first);
-  auto quick_header = [&] {
+  // The quick builds' header; with a host built with clang, the optimised
+  // builds' too (also a .pch), which --expect-edits leaves unused in batch.
+  // cache_with_header links the suite's headers in: each is made a file of
+  // this cache's own before it is damaged, as the suite's are in use.
+  auto quick_headers = [&] {
+    std::vector<std::string> found;
     for (const auto& e : fs::recursive_directory_iterator(cache + "/pch"))
-      if (e.is_regular_file() && e.path().filename() == "model.hpp.pch") return e.path().string();
-    return std::string();
+      if (e.is_regular_file() && e.path().filename() == "model.hpp.pch") found.push_back(e.path().string());
+    for (const std::string& header : found) {
+      fs::copy_file(header, header + ".own");
+      fs::rename(header + ".own", header);
+    }
+    return found;
   };
-  std::string header = quick_header();
-  ASSERT_FALSE(header.empty());
-  const std::uintmax_t size = fs::file_size(header);
-  fs::resize_file(header, 1000000);
+  std::vector<std::string> headers = quick_headers();
+  ASSERT_FALSE(headers.empty());
+  std::set<std::string> notes;
+  for (const std::string& header : headers) {
+    notes.insert(model + ": note: the cached precompiled vvlib header of quick builds was damaged "
+                         "(model/model.hpp.pch has 1000000 bytes, " +
+                 std::to_string(fs::file_size(header)) + " expected); it was built again\n");
+    fs::resize_file(header, 1000000);
+  }
 
   edit(model, "first edit");
   test_run::result truncated = run_in(dir, cache, {"--batch", "--expect-edits", model});
   EXPECT_EQ(truncated.status, 0) << report(truncated);
   EXPECT_TRUE(contains(truncated.out, quick_note)) << report(truncated);
   EXPECT_TRUE(contains(truncated.out, "h=1.5 in 1\n")) << report(truncated);
-  EXPECT_EQ(truncated.err, model + ": note: the cached precompiled vvlib header of quick builds was damaged "
-                                   "(model/model.hpp.pch has 1000000 bytes, " +
-                               std::to_string(size) + " expected); it was built again\n");
+  EXPECT_EQ(notes.count(truncated.err), 1u) << report(truncated);
 
   // Its first bytes overwritten, its size as listed (a header built again
   // may differ in size by a few bytes: clang records where it was made).
-  header = quick_header();
-  ASSERT_FALSE(header.empty());
-  {
+  headers = quick_headers();
+  ASSERT_FALSE(headers.empty());
+  for (const std::string& header : headers) {
     std::fstream f(header, std::ios::in | std::ios::out | std::ios::binary);
     f.write(std::string(4096, '\0').data(), 4096);
   }

@@ -152,6 +152,13 @@ std::string message_file(const std::string& l) {
   return "";
 }
 
+// clang's closing count ("3 errors generated.", "1 warning generated."):
+// not a message of the program's.
+bool is_count(const std::string& l) {
+  return !l.empty() && std::isdigit(static_cast<unsigned char>(l[0])) && ends_with(l, " generated.") &&
+         (l.find(" error") != std::string::npos || l.find(" warning") != std::string::npos);
+}
+
 // "f:12:5: message", with a line and a column that fit an int.
 struct location {
   std::string file;
@@ -192,11 +199,18 @@ std::string compiler_messages(const std::string& output, const message_sources& 
   std::istringstream in(plain_quotes(output));
   std::string kept, line;
   bool keeping = false, about_vvp = false;
+  // After a message about a .vvp line come the compiler's excerpts of the
+  // generated C++ (g++'s "  12 | ...", clang's bare code, carets and
+  // fix-its): the message's own excerpt of the .vvp line replaces them.
+  bool in_excerpt = false;
   while (std::getline(in, line)) {
+    if (is_count(line)) continue;
     std::string path = message_file(line);
+    in_excerpt = in_excerpt && path.empty();
     if (!path.empty()) {
       keeping = path.rfind(sources.vvlib_dir, 0) != 0 && path.rfind("/usr/", 0) != 0;
       about_vvp = ends_with(path, ".vvp");
+      in_excerpt = about_vvp && line.find(": In ") == std::string::npos && line.find(": At ") == std::string::npos;
       std::optional<location> at = keeping && about_vvp ? located(line, path) : std::nullopt;
       if (at) {
         const std::string& text = files.line(at->file, at->line);
@@ -217,7 +231,7 @@ std::string compiler_messages(const std::string& output, const message_sources& 
       keeping = false;
       continue;
     }
-    if (!keeping) continue;
+    if (!keeping || (in_excerpt && path.empty())) continue;
     if (about_vvp && is_excerpt(line)) continue;  // the compiler's caret is in the wrong column
     kept += line + "\n";
   }

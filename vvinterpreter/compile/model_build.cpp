@@ -59,10 +59,10 @@ std::vector<std::string> common_flags(const build_settings& s, const std::string
   std::vector<std::string> f = {"-std=c++17", s.debug ? "-O0" : "-O" + std::to_string(s.optimization),
                                 s.debug ? "-g" : "-g1", "-gdwarf-4", "-fPIC",
                                 "-fvisibility=hidden", "-fvisibility-inlines-hidden",
-                                // so that unloading a model really unloads it (rewind, reload)
-                                "-fno-gnu-unique",
                                 // parallel forall (vv/parallel.hpp)
                                 "-fopenmp"};
+  // So that unloading a model really unloads it (rewind, reload).
+  if (!config::cxx_compiler_is_clang) f.push_back("-fno-gnu-unique");
   std::istringstream extra(instrument_models() ? config::sanitize_flags : "");
   for (std::string w; extra >> w;) f.push_back(w);
   f.push_back("-isystem");
@@ -338,7 +338,7 @@ std::optional<build_result> model_builder::prepare_work() {
   t1 = std::chrono::steady_clock::now();
   header = header_request{s.cache_dir, include, flags,
                           content_hash().add(config::cxx_compiler).add(command_line(flags)).add(stamp).hex(),
-                          config::cxx_compiler, false};
+                          config::cxx_compiler, config::cxx_compiler_is_clang};
   if (quick_wanted()) {
     // The quick builds' header, for the edits to come: on the other core,
     // while g++ makes its own (a few seconds on one core).
@@ -379,7 +379,10 @@ build_result model_builder::compile_and_store() {
   }
   auto compiler = [&](const std::string& header_dir) {
     std::vector<std::string> argv = {config::cxx_compiler};
-    if (!header_dir.empty()) argv.insert(argv.end(), {"-I", header_dir});
+    if (!header_dir.empty() && config::cxx_compiler_is_clang)
+      argv.insert(argv.end(), {"-include-pch", precompiled_header_file(header_dir, true)});
+    else if (!header_dir.empty())
+      argv.insert(argv.end(), {"-I", header_dir});
     argv.insert(argv.end(), flags.begin(), flags.end());
     argv.insert(argv.end(), {"-Wall", "-Wextra", "-I", model_dir});
     return argv;

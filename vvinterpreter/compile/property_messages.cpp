@@ -1,5 +1,7 @@
 #include "compile/property_messages.hpp"
 
+#include <optional>
+
 #include "app/joined_names.hpp"
 #include "compile/text_ends.hpp"
 
@@ -57,21 +59,58 @@ owner owner_of(const std::string& type, const property_fields& f) {
 
 }  // namespace
 
-std::string property_message(const std::string& message, const property_fields& fields) {
+namespace {
+
+// What a "no member" message says: the type's description, the member, and
+// the compiler's suggestion ("" if none).
+struct missing_member {
+  std::string severity, type, name, suggestion;
+};
+
+// g++: "'T' {aka 'U'} has no member named 'x'; did you mean 'y'?"
+std::optional<missing_member> gxx_words(const std::string& message, std::size_t severity_end) {
   static const std::string marker = " has no member named '";
-  std::size_t severity_end = message.find(": ");
   std::size_t at = message.find(marker);
-  if (severity_end == std::string::npos || at == std::string::npos || at < severity_end) return "";
+  if (at == std::string::npos || at < severity_end) return std::nullopt;
   std::size_t name_begin = at + marker.size();
   std::size_t name_end = message.find('\'', name_begin);
-  if (name_end == std::string::npos) return "";
-  owner o = owner_of(described_type(message.substr(severity_end + 2, at - severity_end - 2)), fields);
+  if (name_end == std::string::npos) return std::nullopt;
+  return missing_member{message.substr(0, severity_end),
+                        described_type(message.substr(severity_end + 2, at - severity_end - 2)),
+                        message.substr(name_begin, name_end - name_begin),
+                        between(message, "did you mean '", "'", name_end)};
+}
+
+// clang: "no member named 'x' in 'T'; did you mean 'y'?"
+std::optional<missing_member> clang_words(const std::string& message, std::size_t severity_end) {
+  static const std::string marker = ": no member named '";
+  if (message.compare(severity_end, marker.size(), marker) != 0) return std::nullopt;
+  std::size_t name_begin = severity_end + marker.size();
+  std::size_t name_end = message.find('\'', name_begin);
+  static const std::string in = "' in '";
+  if (name_end == std::string::npos || message.compare(name_end, in.size(), in) != 0) return std::nullopt;
+  std::size_t type_begin = name_end + in.size() - 1;  // its opening quote
+  std::size_t type_end = message.find('\'', type_begin + 1);
+  if (type_end == std::string::npos) return std::nullopt;
+  return missing_member{message.substr(0, severity_end),
+                        described_type(message.substr(type_begin, type_end - type_begin + 1)),
+                        message.substr(name_begin, name_end - name_begin),
+                        between(message, "did you mean '", "'", type_end)};
+}
+
+}  // namespace
+
+std::string property_message(const std::string& message, const property_fields& fields) {
+  std::size_t severity_end = message.find(": ");
+  if (severity_end == std::string::npos) return "";
+  std::optional<missing_member> m = gxx_words(message, severity_end);
+  if (!m) m = clang_words(message, severity_end);
+  if (!m) return "";
+  owner o = owner_of(m->type, fields);
   if (!o.what) return "";
-  std::string name = message.substr(name_begin, name_end - name_begin);
-  std::string suggestion = between(message, "did you mean '", "'", name_end);
-  std::string out = message.substr(0, severity_end) + ": " + o.what + " has no property " +
-                    (o.has_functions ? "or member function '" : "'") + name + "'";
-  if (!suggestion.empty()) out += " (did you mean '" + suggestion + "'?)";
+  std::string out = m->severity + ": " + o.what + " has no property " +
+                    (o.has_functions ? "or member function '" : "'") + m->name + "'";
+  if (!m->suggestion.empty()) out += " (did you mean '" + m->suggestion + "'?)";
   if (o.fields->empty()) return out + "; it has none (a " + o.block + " block declares them)";
   return out + "; its properties are: " + joined_names(*o.fields);
 }

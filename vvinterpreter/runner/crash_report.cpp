@@ -54,7 +54,9 @@ std::string readable_function(const std::string& f) {
   if (f.rfind(block, 0) == 0) return "the " + f.substr(block.size(), f.find('(') - block.size()) + " block";
   if (f.rfind("vv_action_", 0) == 0) return "an action's block";
   if (f.rfind("vv_pick_block", 0) == 0) return "the pick block";
-  if (f.rfind("_GLOBAL__sub_I", 0) == 0 || f.rfind("__static_initialization_and_destruction", 0) == 0)
+  // g++'s names for that code, then clang's.
+  if (f.rfind("_GLOBAL__sub_I", 0) == 0 || f.rfind("__static_initialization_and_destruction", 0) == 0 ||
+      f.rfind("__cxx_global_var_init", 0) == 0)
     return "a global initialiser";
   return f;
 }

@@ -19,6 +19,7 @@
 #include <typeinfo>
 
 #include "runner/report_words.hpp"
+#include "runner/throw_points.hpp"
 
 namespace vvi::fault_guard {
 
@@ -33,6 +34,10 @@ unsigned activity_step = 0;
 // The thread of the announced activity (0: none): the one a sample is of.
 volatile pid_t activity_thread = 0;
 char exception_text[512] = "";
+// Where the uncaught exception was thrown, when the host kept it: reported
+// as the crash's stack (on_terminate).
+void* thrown_frames[64];
+std::size_t thrown_count = 0;
 volatile sig_atomic_t handling = 0;
 char maps_buffer[1 << 18];
 char sample_maps_buffer[1 << 18];  // a sample may run while another thread crashes
@@ -155,9 +160,24 @@ std::uintptr_t return_address_at_entry(void* context) {
 // The stack as return addresses. The unwinder stops at an instruction it has
 // no table for (a PLT stub, address 0): the caller is then added from the
 // interrupted registers, so the report still names the model's line.
+// Whether the stack still holds the frames just outside the throw (the
+// kept record's first ones past the host's own __cxa_throw).
+bool reaches_throw(void* const* frames, int n) {
+  for (std::size_t k = 1; k < thrown_count && k <= 3; ++k)
+    for (int i = 0; i < n; ++i)
+      if (frames[i] == thrown_frames[k]) return true;
+  return false;
+}
+
 void send_frames(void* context = nullptr) {
   void* frames[65];
   int n = backtrace(frames, 64);
+  if (exception_text[0] && thrown_count > 1 && !reaches_throw(frames, n)) {
+    // The stack no longer reaches the throw (on_terminate): its record does.
+    n = 0;
+    for (std::size_t i = 0; i < thrown_count; ++i) frames[n++] = thrown_frames[i];
+    context = nullptr;  // abort()'s pc is not the throw's
+  }
   if (context) {
     std::uintptr_t pc = fault_pc(context);
     bool stopped_at_pc = n > 0 && reinterpret_cast<std::uintptr_t>(frames[n - 1]) == pc;
@@ -251,9 +271,12 @@ void on_termination(int sig) {
 }
 
 void on_terminate() {
-  // Keep what the exception said; abort() then reports it with the stack,
-  // which still holds the throw (nothing caught it, so nothing unwound).
+  // Keep what the exception said; abort() then reports it with the stack
+  // where it was thrown. g++ calls terminate from the throw, nothing
+  // unwound; clang first unwinds to the noexcept function the exception
+  // would leave, so the host's record of the throw is the stack to report.
   if (std::exception_ptr e = std::current_exception()) {
+    thrown_count = vv_host_throw_frames(thrown_frames, sizeof thrown_frames / sizeof thrown_frames[0]);
     try {
       std::rethrow_exception(e);
     } catch (const std::exception& x) {

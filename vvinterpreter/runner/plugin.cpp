@@ -13,6 +13,7 @@
 #include <vv/io/files.hpp>
 
 #include "runner/fault_guard.hpp"
+#include "runner/throw_points.hpp"
 
 namespace vvi {
 
@@ -94,7 +95,9 @@ std::unique_ptr<plugin> plugin::open(const std::string& path, std::string& error
   // crash report names its .vvp line.
   fault_guard::note_module(copy, path);
   fault_guard::begin("loading");
+  throw_points::keep(true);  // its global initialisers run now
   p->handle_ = dlopen(copy.c_str(), RTLD_NOW | RTLD_LOCAL);
+  throw_points::keep(false);
   fault_guard::finish();
   // Loaded or not, the file is no longer needed: /proc/self/maps names it
   // "(deleted)", and the crash report reads the line tables of the plugin
@@ -123,7 +126,11 @@ std::unique_ptr<plugin> plugin::open(const std::string& path, std::string& error
 }
 
 plugin::~plugin() {
+  // Its global destructors run now: a throw there ends the process, and the
+  // crash report names the throw's line from this record (fault_guard.cpp).
+  throw_points::keep(true);
   if (handle_) dlclose(handle_);
+  throw_points::keep(false);
   if (!copy_removed_ && !copy_.empty()) ::unlink(copy_.c_str());
 }
 

@@ -248,6 +248,7 @@ class std::allocator<vv::vertex<Tr>> {
 
   allocator() noexcept = default;
   allocator(const allocator&) noexcept = default;
+  allocator& operator=(const allocator&) noexcept = default;
   template <class U>
   allocator(const std::allocator<U>&) noexcept {}
 
