@@ -22,6 +22,7 @@
 #include <utility>
 
 #include <vv/context.hpp>
+#include <vv/detail/thread_stack.hpp>
 
 #include "abi.hpp"
 #include "file_registry.hpp"
@@ -55,11 +56,26 @@ class program {
   exchange& host_exchange() noexcept { return exchange_; }
 
   //! Runs the program's code for the host: file objects made meanwhile
-  //! join this model; NULL, or the error (model/guarded.hpp).
+  //! join this model; NULL, or the error (model/guarded.hpp). The code
+  //! runs as a block (context::block_scope): handles on its stack hold no
+  //! count, and the collector runs, if due, once it has returned.
   template <class Fn>
   const char* run(Fn&& fn) noexcept {
     registry_scope scope(files_);
-    return guarded(exchange_, std::forward<Fn>(fn));
+    if (!ctx_) return guarded(exchange_, fn);  // no handle to count yet
+    return run_block(fn);
+  }
+
+  // Not inlined: the block's handles are in this frame or below it, the
+  // caller's (which may hold counted handles) above.
+  template <class Fn>
+  [[gnu::noinline]] const char* run_block(Fn& fn) noexcept {
+    const char* error;
+    {
+      typename context<Tr>::block_scope block(*ctx_, detail::thread_stack_low(), __builtin_frame_address(0));
+      error = guarded(exchange_, fn);
+    }
+    return error ? error : guarded(exchange_, [this] { ctx_->collect_if_due(); });
   }
 
   //! vv_plugin::configure.

@@ -28,6 +28,15 @@
 // amortised over that work), never inside a neighbourhood loop whose
 // snapshot holds uncounted slots, and on demand (collect_garbage).
 //
+// Blocks (block_scope). While a translated program's block runs, the
+// handles on its thread's stack below the block's frame hold no count (a
+// fifth of a subdivision step's instructions went to counting its locals,
+// parameters and temporaries), and the tracing pass waits for the block's
+// end: then those handles are gone, and the counts are complete again.
+// Handles anywhere else (globals, properties, containers, other threads)
+// are counted as always. Vertices the block made that no count holds at
+// its end are counted among the pass's suspects.
+//
 // Parallel loops (vv/parallel.hpp). While one runs, the context is in a
 // parallel scope: the collector is paused, edits, vertex creation, mesh
 // changes and random numbers are errors, and the loop's threads keep their
@@ -101,6 +110,43 @@ class context {
     std::uint32_t id = allocate_slot(w);
     props(id) = p;
     return vertex<Tr>::from_slot(this, id);
+  }
+
+  //! The scope of a block of a translated program (model/program.hpp),
+  //! running on this thread, whose frame is at `frame` and whose thread's
+  //! stack begins at stack_low (0: unknown). Until it ends, handles made or
+  //! assigned on this stack below `frame` hold no count (counts_at), and
+  //! the collector waits. Nested scopes change nothing; the outermost one
+  //! counts the vertices made meanwhile that nothing holds as suspects
+  //! (collect_if_due collects them).
+  class block_scope {
+   public:
+    block_scope(context& c, std::uintptr_t stack_low, const void* frame) noexcept : c_(c) {
+      if (c.block_depth_++ != 0 || stack_low == 0 || c.parallel_) return;
+      const auto high = reinterpret_cast<std::uintptr_t>(frame);
+      if (high <= stack_low) return;
+      c.uncounted_low_ = stack_low;
+      c.uncounted_size_ = high - stack_low;
+      c.first_block_slot_ = c.next_slot_;
+      ++c.gc_pauses_;
+    }
+    block_scope(const block_scope&) = delete;
+    block_scope& operator=(const block_scope&) = delete;
+    ~block_scope() {
+      if (--c_.block_depth_ == 0 && c_.uncounted_size_ != 0) c_.end_uncounted_block();
+    }
+
+   private:
+    context& c_;
+  };
+  //! Whether a handle at address `at` holds a count: everywhere but on the
+  //! stack of a running block (block_scope).
+  VV_INLINE bool counts_at(const void* at) const noexcept {
+    return reinterpret_cast<std::uintptr_t>(at) - uncounted_low_ >= uncounted_size_;
+  }
+  //! Runs the tracing pass if enough counts dropped to zero since the last.
+  void collect_if_due() {
+    if (suspects_ >= gc_threshold_ && gc_pauses_ == 0) collect_garbage();
   }
 
   //! Vertices alive (reachable or not yet collected).
@@ -328,6 +374,7 @@ class context {
     parallel_->strict->note_use(id, w, [&](std::vector<unsigned char>& out) { snapshot(id, out); });
   }
   void free_slot(std::uint32_t id);
+  void end_uncounted_block() noexcept;
 
   // Before the vertex storage, so that it outlives the properties' vectors.
   detail::handle_blocks handle_blocks_;
@@ -344,6 +391,12 @@ class context {
   std::size_t suspects_ = 0;  // counts that dropped to zero since the last pass
   std::size_t gc_threshold_ = min_gc_threshold;
   unsigned gc_pauses_ = 0;
+  // block_scope: the uncounted stack range, the nesting depth, the first
+  // slot made in the block and the freed slots it made vertices in again.
+  std::uintptr_t uncounted_low_ = 0, uncounted_size_ = 0;
+  unsigned block_depth_ = 0;
+  std::uint32_t first_block_slot_ = 0;
+  std::vector<std::uint32_t> reused_in_block_;
   std::mt19937_64 rng_{5489u};
   std::set<std::string> warned_;  // keys of the warnings said
   std::mutex warned_mutex_;
@@ -372,6 +425,7 @@ std::uint32_t context<Tr>::allocate_slot(const where& w) {
   if (!free_slots_.empty()) {
     id = free_slots_.back();
     free_slots_.pop_back();
+    if (uncounted_size_) reused_in_block_.push_back(id);
   } else {
     if ((next_slot_ >> chunk_bits) == chunks_.size()) add_chunk();
     id = next_slot_++;
@@ -380,6 +434,20 @@ std::uint32_t context<Tr>::allocate_slot(const where& w) {
   refs_[id] = 0;
   ++live_;
   return id;
+}
+
+template <class Tr>
+void context<Tr>::end_uncounted_block() noexcept {
+  uncounted_low_ = uncounted_size_ = 0;
+  // Made in the block and held by no count now: only its stack held them,
+  // or nothing (they may still be reachable through a neighbourhood).
+  auto suspect = [this](std::uint32_t id) {
+    if (labels_[id] != 0 && refs_[id] == 0) ++suspects_;
+  };
+  for (std::uint32_t id = first_block_slot_; id < next_slot_; ++id) suspect(id);
+  for (std::uint32_t id : reused_in_block_) suspect(id);
+  reused_in_block_.clear();
+  --gc_pauses_;
 }
 
 template <class Tr>

@@ -1,4 +1,5 @@
-// Vertex handles: counted references to a vertex of a context, and the
+// Vertex handles: references to a vertex of a context (counted, but on a
+// running block's stack: context::block_scope), and the
 // read-only view of a vertex's synchronised (old) state.
 #pragma once
 
@@ -30,19 +31,24 @@ class vertex {
   vertex() noexcept = default;
   vertex(std::nullptr_t) noexcept {}  // `vertex v = 0;`
   VV_INLINE vertex(const vertex& o) noexcept : ctx_(o.ctx_), id_(o.id_) {
-    if (id_) ctx_->retain(id_);
+    if (id_) hold();
   }
   // A borrowed handle (see rebind_borrowed) is copied, never robbed: its
-  // loop still reads it, and the new handle must hold a count of its own.
+  // loop still reads it, and the new handle must hold a count of its own
+  // (unless it is on a running block's stack too: hold).
   VV_INLINE vertex(vertex&& o) noexcept : ctx_(o.ctx_), id_(o.id_) {
     if (!o.borrowed_) o.id_ = 0;
-    else if (id_) ctx_->retain(id_);
+    else if (id_) hold();
   }
   VV_INLINE vertex& operator=(const vertex& o) noexcept {
-    if (o.id_) o.ctx_->retain(o.id_);
+    context_type* const c = o.ctx_;
+    const std::uint32_t id = o.id_;
+    const bool counted = id && c->counts_at(this);
+    if (counted) c->retain(id);
     drop();
-    ctx_ = o.ctx_;
-    id_ = o.id_;
+    ctx_ = c;
+    id_ = id;
+    borrowed_ = id && !counted;
     return *this;
   }
   VV_INLINE vertex& operator=(vertex&& o) noexcept {
@@ -90,10 +96,10 @@ class vertex {
   // ---- for the library: the storage behind the handle ----
   context_type* ctx() const noexcept { return ctx_; }
   std::uint32_t slot() const noexcept { return id_; }
-  //! A new counted handle to a slot.
+  //! A new handle to a slot: counted, unless it is made on a running
+  //! block's stack (context::block_scope).
   VV_INLINE static vertex from_slot(context_type* c, std::uint32_t id) noexcept {
-    if (id) c->retain(id);
-    return vertex(c, id);
+    return vertex(c, id, hold_tag{});
   }
   //! Makes this handle name a slot without counting it: a neighbourhood
   //! loop's variable (neighbour_range), valid while the loop keeps the
@@ -133,9 +139,20 @@ class vertex {
   }
 
  private:
-  vertex(context_type* c, std::uint32_t id) noexcept : ctx_(c), id_(id) {}
+  struct hold_tag {};
+  // Guaranteed copy elision makes `this` the handle's final address, also
+  // through from_slot.
+  vertex(context_type* c, std::uint32_t id, hold_tag) noexcept : ctx_(c), id_(id) {
+    if (id_) hold();
+  }
   struct borrow_tag {};
   vertex(context_type* c, std::uint32_t id, borrow_tag) noexcept : ctx_(c), id_(id), borrowed_(true) {}
+  // Takes a count for id_, or, on the stack of a running block, none: the
+  // collector waits for the block's end, when this handle is gone.
+  VV_INLINE void hold() noexcept {
+    if (ctx_->counts_at(this)) ctx_->retain(id_);
+    else borrowed_ = true;
+  }
   VV_INLINE void drop() noexcept {
     if (id_ && !borrowed_) ctx_->release(id_);
     id_ = 0;
@@ -144,7 +161,7 @@ class vertex {
 
   context_type* ctx_ = nullptr;
   std::uint32_t id_ = 0;
-  bool borrowed_ = false;  // rebind_borrowed: no count to release
+  bool borrowed_ = false;  // no count to release: rebind_borrowed, or on a block's stack
 };
 
 //! `labelof v`
