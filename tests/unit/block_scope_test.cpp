@@ -43,7 +43,13 @@ TEST(BlockScope, TheThreadsStackIsKnown) {
   const std::uintptr_t low = vv::detail::thread_stack_low();
   ASSERT_NE(low, 0u);
   EXPECT_LT(low, reinterpret_cast<std::uintptr_t>(__builtin_frame_address(0)));
-  EXPECT_EQ(vv::detail::thread_stack_low(), low) << "asked once per thread";
+  vv::detail::thread_stack_cache cache;
+  EXPECT_EQ(cache.low(), low);
+  std::uintptr_t other = 0;
+  std::thread([&] { other = cache.low(); }).join();
+  EXPECT_NE(other, 0u);
+  EXPECT_NE(other, low) << "asked again on another thread";
+  EXPECT_EQ(cache.low(), low);
 }
 
 TEST(BlockScope, HandlesOnTheBlocksStackHoldNoCountAndOthersDo) {

@@ -72,7 +72,7 @@ class program {
   [[gnu::noinline]] const char* run_block(Fn& fn) noexcept {
     const char* error;
     {
-      typename context<Tr>::block_scope block(*ctx_, detail::thread_stack_low(), __builtin_frame_address(0));
+      typename context<Tr>::block_scope block(*ctx_, stack_.low(), __builtin_frame_address(0));
       error = guarded(exchange_, fn);
     }
     return error ? error : guarded(exchange_, [this] { ctx_->collect_if_due(); });
@@ -109,6 +109,7 @@ class program {
   file_registry* previous_;
   vv::proxy proxy_;
   exchange exchange_;
+  detail::thread_stack_cache stack_;  // of the thread the blocks run on
   // Deleted through the function given when it was made: this class is
   // complete before Tr is.
   using context_ptr = std::unique_ptr<context<Tr>, void (*)(context<Tr>*)>;
