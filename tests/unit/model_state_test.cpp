@@ -86,6 +86,10 @@ void build(model& m) {
   vv::synchronise(m.S);
   ring[3]->heat = 99;  // differs from its old state
   {
+    vertex hidden = c.new_vertex();  // held by no count, reached through ring[0]
+    vv::splice_after(hidden, ring[1], ring[0]);
+  }
+  {
     vertex dropped = c.new_vertex();  // no handle left: garbage
   }
   c.collect_garbage();
@@ -117,6 +121,19 @@ TEST(ModelState, ARestoredModelSavesTheSameBytesAndGoesOnAsTheSavedOne) {
   EXPECT_EQ(next_b.slot(), next_a.slot());
   EXPECT_EQ(next_b.label(), next_a.label());
   EXPECT_EQ(b.p.ctx().random()(), a.p.ctx().random()());
+}
+
+// A host restores inside a block (model/program.hpp), whose end counts the
+// vertices it made that no count holds as the collector's suspects: not
+// those the restore made, or the resumed run would collect at other times.
+TEST(ModelState, ARestoreInsideABlockLeavesTheCollectorAsSaved) {
+  model a;
+  build(a);
+  const std::string state = a.save();
+  model b;
+  b.p.ctx();  // a block needs the context
+  ASSERT_EQ(b.p.run([&] { b.restore(state); }), nullptr);
+  EXPECT_EQ(b.save(), state);
 }
 
 TEST(ModelState, TheCLibrarysGeneratorsGoOnWhereTheStateWasSaved) {

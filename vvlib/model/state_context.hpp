@@ -147,6 +147,11 @@ struct context_state {
     if (live != k.live) throw state_error("a live vertex count that does not match its vertices");
     c.live_ = live;
     c.suspects_ = static_cast<std::size_t>(k.suspects);
+    // The restored vertices were not made by the block that restores them:
+    // its end must not count them as suspects (context::block_scope), or
+    // the resumed run would collect at other times than the saved one.
+    if (c.uncounted_size_) c.first_block_slot_ = c.next_slot_;
+    c.reused_in_block_.clear();
   }
 
  private:
