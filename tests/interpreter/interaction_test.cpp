@@ -324,8 +324,12 @@ TEST(ViewerInteraction, SavingAFunctionFileRereadsIt) {
   test_run::result r = v.finish();
   EXPECT_EQ(r.status, 0) << report(r);
   // Three steps: the file's values, the edited ones, and again the edited
-  // ones after the broken save; the start block ran once (no rewind).
-  EXPECT_EQ(r.out.find("start f(0.5) = 0.5\n"), r.out.rfind("start f(0.5)")) << report(r);
+  // ones after the broken save; the start block did not run again after the
+  // reread (no rewind). (It may have run twice before it: a first build
+  // that was quick, as a cached declarations' part makes it, replays start
+  // on the optimised build swapped in.)
+  ASSERT_NE(r.out.find("reread "), std::string::npos) << report(r);
+  EXPECT_LT(r.out.rfind("start f(0.5)"), r.out.find("reread ")) << report(r);
   EXPECT_TRUE(has(r.out, "step f(0.5) = 0.5\nreread " + d + "growth.func\nstep f(0.5) = 1\n")) << report(r);
   std::size_t second = r.out.find("step f(0.5) = 1\n");
   ASSERT_NE(second, std::string::npos) << report(r);

@@ -231,6 +231,29 @@ TEST(ModelController, WithoutRestoringAnErrorEndsTheRunAndDropsWhatFollows) {
   EXPECT_TRUE(m.c.idle());
 }
 
+// The window waits for events as long as nothing is due (a frame drawn in
+// software takes a core from the model and the compiler): idle, at the
+// file watch's pace; in a `wait`, until it ends, a step asked for meanwhile
+// running then.
+TEST(ModelController, TheWindowMaySleepUntilTheNextThingIsDue) {
+  controlled m("history.vvp");
+  EXPECT_DOUBLE_EQ(m.c.seconds_until_due(0), 0.25);
+  m.c.poll(10.0);  // the time now
+  command wait = command::of(command::wait);
+  wait.number = 100;
+  m.c.submit(wait);  // at once: it goes beside jobs
+  EXPECT_FALSE(m.c.idle());
+  EXPECT_NEAR(m.c.seconds_until_due(10.0), 0.1, 1e-9);
+  m.c.submit(command::steps(1));
+  m.c.poll(10.06);
+  EXPECT_EQ(m.c.facts().steps, 0u);
+  EXPECT_NEAR(m.c.seconds_until_due(10.06), 0.04, 1e-9);
+  m.c.poll(10.1);
+  EXPECT_EQ(m.c.facts().steps, 1u);
+  EXPECT_TRUE(m.c.idle());
+  EXPECT_DOUBLE_EQ(m.c.seconds_until_due(10.1), 0.25);
+}
+
 // The script's commands go one at a time, each once the one before has
 // finished, and the record has the position before the command runs.
 TEST(ScriptPlayer, GivesEachCommandOnceTheOneBeforeIsDoneAndTellsThePositionFirst) {

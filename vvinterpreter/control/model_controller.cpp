@@ -96,9 +96,19 @@ bool model_controller::idle() const {
          !replay_ && steps_left_ == 0 && now_ >= wait_until_ && view_.caught_up();
 }
 
-bool model_controller::only_builds_run() const {
-  return (building_ || optimising_) && queue_.empty() && !jobs_.busy() && !load_ && !loading_ && !replay_ &&
-         !optimised_build_ && steps_left_ == 0 && !animating_;
+double model_controller::seconds_until_due(double now) const {
+  constexpr double longest = 0.25;  // an idle window's pace: the file watch
+  if (build_ended_.times() > builds_taken_) return 0;  // its result is a moment away
+  if (!view_.caught_up()) return 0;
+  if (jobs_.busy()) return 0.1;  // its end wakes the loop; the panel counts its seconds
+  if (load_ || loading_ || replay_ || steps_left_ > 0) return 0;
+  if (optimised_build_) return 0.02;
+  double due = longest;
+  if (now < wait_until_) due = std::min(due, wait_until_ - now);
+  else if (!queue_.empty()) return 0.02;  // held up by what the view has still to do
+  if (animating_ && runner_.model())
+    due = std::min(due, std::max(0.0, last_animated_ + facts_.delay_msec / 1000.0 - now));
+  return due;  // a build's end wakes the loop
 }
 
 bool model_controller::only_a_job_runs() const {

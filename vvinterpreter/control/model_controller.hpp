@@ -28,6 +28,7 @@
 #include "control/model_jobs.hpp"
 #include "control/recording.hpp"
 #include "control/state_record.hpp"
+#include "control/wake_signal.hpp"
 #include "runner/model_runner.hpp"
 
 namespace vvi {
@@ -68,12 +69,15 @@ class model_controller {
   //! Nothing queued, running, building or loading, the view caught up: a
   //! script's next command may go.
   bool idle() const;
-  //! Nothing to do but wait for a build (or the optimised build behind a
-  //! quick one) to finish.
-  bool only_builds_run() const;
   //! Only a job runs (a script's `wait` and `window-screenshot` go beside it).
   bool only_a_job_runs() const;
   bool busy() const { return jobs_.busy(); }
+  //! How long the window may wait for events before there is something to
+  //! do (0: now): the end of a `wait`, the next frame of an animation; a
+  //! job or a build that ends wakes it (build_ended(), the jobs' own).
+  double seconds_until_due(double now) const;
+  //! Called from a build's thread when the build ends.
+  wake_signal& build_ended() { return build_ended_; }
   //! The view has shown what it was asked to (pictures taken, states drawn).
   bool view_caught_up() const { return view_.caught_up(); }
   bool building() const { return building_; }
@@ -188,6 +192,8 @@ class model_controller {
   bool resume_pending_ = false;     // the first build after a restart
   bool keep_error_once_ = false;
   bool building_ = false, build_cached_ = false;
+  wake_signal build_ended_;  // before the builds' futures, whose threads call it
+  unsigned long builds_taken_ = 0;  // results taken from those futures
   std::future<build_result> build_;
   // The optimised build beside a quick one, and the build it is for (a
   // newer build makes it stale: it is then made again for that one).

@@ -21,8 +21,12 @@ void model_controller::start_build(bool force) {
   // Recompile asks for the optimised build itself.
   model_runner::build_kind kind = policy_.swap_in_optimised && !force ? model_runner::build_kind::quick_first
                                                                       : model_runner::build_kind::usual;
-  build_ = std::async(std::launch::async,
-                      [runner, force, view, kind] { return runner->build(force, [view] { view->compiling(); }, kind); });
+  wake_signal* ended = &build_ended_;
+  build_ = std::async(std::launch::async, [runner, force, view, kind, ended] {
+    build_result b = runner->build(force, [view] { view->compiling(); }, kind);
+    (*ended)();
+    return b;
+  });
 }
 
 // The optimised build of the quick build just made, beside its load.
@@ -35,14 +39,19 @@ void model_controller::start_optimising() {
   optimise_again_ = false;
   optimising_for_ = builds_started_;
   const model_runner* runner = &runner_;
-  optimised_ = std::async(std::launch::async,
-                          [runner] { return runner->build(false, {}, model_runner::build_kind::behind_quick); });
+  wake_signal* ended = &build_ended_;
+  optimised_ = std::async(std::launch::async, [runner, ended] {
+    build_result b = runner->build(false, {}, model_runner::build_kind::behind_quick);
+    (*ended)();
+    return b;
+  });
 }
 
 void model_controller::finish_optimising() {
   if (!optimising_ || optimised_.wait_for(std::chrono::seconds(0)) != std::future_status::ready) return;
   optimising_ = false;
   build_result b = optimised_.get();
+  ++builds_taken_;
   if (optimise_again_ || optimising_for_ != builds_started_ || building_) {
     // A newer build came meanwhile: its own optimised build follows it.
     if (optimise_again_ && !building_) start_optimising();
@@ -74,6 +83,7 @@ void model_controller::finish_build() {
   if (!building_ || build_.wait_for(std::chrono::seconds(0)) != std::future_status::ready) return;
   building_ = false;
   build_result b = build_.get();
+  ++builds_taken_;
   view_.build_finished(b);
   if (!b.ok) {
     // The last good model keeps running.

@@ -61,6 +61,9 @@ void model_worker::loop() {
     lock.lock();
     busy_ = false;
     finished_ = true;
+    lock.unlock();
+    job_ended_();
+    lock.lock();
   }
 }
 

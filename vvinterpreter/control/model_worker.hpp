@@ -12,6 +12,7 @@
 #include <thread>
 
 #include "control/model_jobs.hpp"
+#include "control/wake_signal.hpp"
 
 namespace vvi {
 
@@ -27,6 +28,8 @@ class model_worker : public model_jobs {
   double busy_seconds() const override;
   std::string what() const override;
   bool take_finished() override;
+  //! Called when a job ends.
+  wake_signal& job_ended() { return job_ended_; }
 
  private:
   void loop();
@@ -37,6 +40,7 @@ class model_worker : public model_jobs {
   std::string what_;
   bool busy_ = false, finished_ = false, quit_ = false;
   std::chrono::steady_clock::time_point since_;
+  wake_signal job_ended_;  // before the thread, which calls it
   std::thread thread_;
 };
 

@@ -97,11 +97,11 @@ void draw_scene(viewer_parts& v, int w, int h) {
 
 void draw_one_frame(viewer_parts& v) {
   model_controller& c = v.controller;
-  if (c.idle() && !c.animating() && v.script.done()) v.window.wait_events(0.25);  // wake for events and the file watch
-  // While the model's code runs or a compiler does, frames at 50 Hz at
-  // most: drawing as fast as it can would take a core from them.
-  else if (c.busy() || c.only_builds_run()) v.window.wait_events(0.02);
-  else v.window.wait_events(0);
+  // No frame until there is something to show or do: a frame drawn in
+  // software takes a core from the model and the compiler. Input, and the
+  // end of a job or a build, wake the loop at once.
+  bool script_goes_on = !v.script.done() && c.idle();
+  v.window.wait_events(script_goes_on ? 0 : c.seconds_until_due(now_seconds()));
   double t = now_seconds();
   v.view.watch().check(t, c);
   c.poll(t);

@@ -75,6 +75,8 @@ void gl_window::wait_events(double seconds) {
   else glfwPollEvents();
 }
 
+void gl_window::wake() { glfwPostEmptyEvent(); }
+
 void gl_window::swap() { glfwSwapBuffers(window_); }
 void gl_window::size(int& w, int& h) const { glfwGetWindowSize(window_, &w, &h); }
 void gl_window::framebuffer_size(int& w, int& h) const { glfwGetFramebufferSize(window_, &w, &h); }

@@ -34,7 +34,10 @@ class gl_window {
   bool should_close() const;
   void request_close();
   //! Waits for events at most `seconds` (0: only takes what is there).
+  //! Waits for input, for `seconds` at most (0: takes what came, at once).
   void wait_events(double seconds);
+  //! Ends a wait_events, from any thread, while the window is open.
+  static void wake();
   void swap();
   //! The window's size in screen coordinates, and its framebuffer's in pixels.
   void size(int& w, int& h) const;

@@ -47,11 +47,16 @@ int run_viewer_window(const options& o, const state_record& from) {
   viewer_input input(window, controller, view, layout);
   window.set_input(&input);
   viewer_parts parts{window, controller, view, player, layout, editor};
+  // The frame loop sleeps while a job or a build runs; their ends wake it.
+  worker.job_ended().connect(gl_window::wake);
+  controller.build_ended().connect(gl_window::wake);
 
   controller.set_up();
   controller.submit(command::of(command::reload));  // the first build
   while (!window.should_close()) draw_one_frame(parts);
   controller.set_quitting();  // whatever happens now, no restart
+  worker.job_ended().disconnect();  // no wake after the window has gone
+  controller.build_ended().disconnect();
   if (controller.busy()) {  // closed while the model runs: it cannot be closed cleanly
     std::fflush(nullptr);
     _exit(0);
