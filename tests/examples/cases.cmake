@@ -24,7 +24,7 @@ foreach(case IN LISTS cases)
   endif()
   add_test(NAME example.${name}
            COMMAND ${CMAKE_COMMAND} -DINTERPRETER=$<TARGET_FILE:vvinterpreter> -DCHECK=$<TARGET_FILE:vvm_check>
-                   -DCACHE=${example_cache} -DMODEL=${PROJECT_SOURCE_DIR}/${model} -DSTEPS=${steps}
+                   -DCACHE=${example_cache} -DMODEL=${PROJECT_SOURCE_DIR}/${model} -DSTEPS=${steps} "-DSET=${set}"
                    -DOUT=${CMAKE_CURRENT_BINARY_DIR}/${name}.vvm -DMESH=${mesh}
                    -DVERTICES=${vertices} -DEDGES=${edges} -DFACES=${faces} -DMAXFACE=${max_face}
                    -DTOLERANCE=${tolerance} -DGOLDEN=${PROJECT_SOURCE_DIR}/tests/golden/${name}.vvm
@@ -53,7 +53,7 @@ foreach(case IN LISTS cases)
     set_tests_properties(example.${name} PROPERTIES ENVIRONMENT "${environment}")
     add_test(NAME example.${name}.one_thread
              COMMAND ${CMAKE_COMMAND} -DINTERPRETER=$<TARGET_FILE:vvinterpreter> -DCHECK=$<TARGET_FILE:vvm_check>
-                     -DCACHE=${example_cache} -DMODEL=${PROJECT_SOURCE_DIR}/${model} -DSTEPS=${steps}
+                     -DCACHE=${example_cache} -DMODEL=${PROJECT_SOURCE_DIR}/${model} -DSTEPS=${steps} "-DSET=${set}"
                      -DOUT=${CMAKE_CURRENT_BINARY_DIR}/${name}.one_thread.vvm -DMESH=${mesh}
                      -DVERTICES=${vertices} -DEDGES=${edges} -DFACES=${faces} -DMAXFACE=${max_face}
                      -DTOLERANCE=${tolerance} -DGOLDEN=${PROJECT_SOURCE_DIR}/tests/golden/${name}.vvm

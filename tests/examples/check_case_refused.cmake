@@ -8,7 +8,7 @@ execute_process(COMMAND ${CMAKE_COMMAND} -DCASE=${CASE} -P ${PARSE_CASE}
 if(status EQUAL 0)
   message(FATAL_ERROR "the case file was accepted:\n${out}${err}")
 endif()
-set(expected "error: ${CASE}:4: unknown key 'vertexes' (known: model, steps, mesh, vertices, edges, faces, max_face, tolerance, view, gallery_mesh)")
+set(expected "error: ${CASE}:4: unknown key 'vertexes' (known: model, steps, set, mesh, vertices, edges, faces, max_face, tolerance, view, gallery_mesh)")
 string(FIND "${err}" "${expected}\n" at)
 if(at LESS 0)
   message(FATAL_ERROR "no line\n  ${expected}\nin:\n${err}")

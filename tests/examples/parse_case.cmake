@@ -1,14 +1,15 @@
 # vv_parse_case(FILE): reads one regression case (cases/NAME.test) into the
-# caller's variables model, steps, mesh, vertices, edges, faces, max_face,
-# tolerance, view and gallery_mesh (the last two only for the picture of
-# scripts/make-gallery). Lines are `key = value` (a `#` that starts a word
+# caller's variables model, steps, set, mesh, vertices, edges, faces,
+# max_face, tolerance, view and gallery_mesh (the last two only for the
+# picture of scripts/make-gallery, which draws the example as it is; `set`:
+# parameters of the regression run, NAME=VALUE words given as --set). Lines are `key = value` (a `#` that starts a word
 # starts a comment); a key that is not one of those, or a line that is not
 # a `key = value`, is an error naming the file and line: a typo must not
 # drop a check without a word. Run as a script, it prints the error as one
 # unwrapped line, "error: FILE:LINE: ...", before failing: CMake wraps its
 # own error messages at a width, so a longer path moves the line breaks.
 cmake_policy(SET CMP0057 NEW)  # if(IN_LIST), also when run as a script
-set(VV_CASE_KEYS model steps mesh vertices edges faces max_face tolerance view gallery_mesh)
+set(VV_CASE_KEYS model steps set mesh vertices edges faces max_face tolerance view gallery_mesh)
 
 # Stops at a case file's error: in a configure, as CMake's error; as a
 # script, first as one line that tests can match whatever the path.

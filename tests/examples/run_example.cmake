@@ -1,6 +1,6 @@
 # One example's regression test: run it in batch mode, export a mesh, and
 # check the export with vvm_check (counts, golden file).
-# -DINTERPRETER -DCHECK -DCACHE -DMODEL -DSTEPS -DOUT [-DMESH] [-DMAXFACE]
+# -DINTERPRETER -DCHECK -DCACHE -DMODEL -DSTEPS -DOUT [-DSET] [-DMESH] [-DMAXFACE]
 # [-DVERTICES -DEDGES -DFACES] -DGOLDEN [-DTOLERANCE] [-DOPT (--opt)]
 # [-DUPDATE_GOLDEN=ON] [-DTHREADS (--threads)]
 # With -DUPDATE_GOLDEN=ON (the cache option VV_UPDATE_GOLDEN, as
@@ -11,6 +11,10 @@
 # CMake wraps the text of its errors at a width, so paths would move the
 # line breaks of anything a test or a reader looks for.
 set(args --batch --quiet --cache ${CACHE} --steps ${STEPS} --export ${OUT})
+separate_arguments(parameters UNIX_COMMAND "${SET}")  # NAME=VALUE words
+foreach(p IN LISTS parameters)
+  list(APPEND args --set ${p})
+endforeach()
 if(MESH)
   list(APPEND args --mesh ${MESH})
 endif()
