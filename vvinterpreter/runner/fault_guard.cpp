@@ -250,16 +250,30 @@ void on_sample(int sig, siginfo_t* info, void* context) {
 
 // exit() inside a block ends the run before its end: tell the supervisor
 // where it was called (_exit cannot be seen; the supervisor still knows the
-// block from the protocol).
-void on_exit_call() {
-  if (activity_thread == 0 || report < 0) return;
+// block from the protocol). False outside a block.
+bool report_exit_call() {
+  if (activity_thread == 0 || report < 0) return false;
   flush_unlocked(stdout);
   line l;
   (l << words::sample << " " << words::exit_call).send();
   send_frames();
   send_maps(sample_maps_buffer);
   (l << words::end).send();
+  return true;
 }
+
+// Then the process ends at once, with the model's status: the exit
+// handlers registered before this one (the libraries' destructors, the GL
+// driver's among them) would run on the model's thread while the window's
+// thread still draws, and crash it there.
+void on_exit_call(int status, void*) {
+  if (report_exit_call()) {
+    flush_unlocked(stderr);
+    _exit(status);
+  }
+}
+
+void on_quick_exit_call() { report_exit_call(); }  // quick_exit runs no destructors
 
 // A termination signal (the supervisor went, Ctrl-C) ends the process as
 // it would have, without leaving a half-written file behind.
@@ -346,8 +360,8 @@ void install(int report_fd) {
   term.sa_handler = on_termination;
   sigemptyset(&term.sa_mask);
   for (int sig : {SIGTERM, SIGINT, SIGHUP}) sigaction(sig, &term, nullptr);
-  std::atexit(on_exit_call);
-  std::at_quick_exit(on_exit_call);
+  on_exit(on_exit_call, nullptr);
+  std::at_quick_exit(on_quick_exit_call);
 }
 
 void begin(const char* what, unsigned step, bool announce) {
