@@ -19,11 +19,15 @@ void build_watch::model_files(const std::vector<std::string>& files) {
 }
 
 void build_watch::check(double now, model_controller& c) {
-  if (now - last_check_ < 0.25) return;
+  if (now - last_check_ < period_) return;
   last_check_ = now;
   if (!c.building() && sources_.changed()) c.submit(command::of(command::reload));
   // A file a file object reads was saved: reread it, keeping the step.
   if (objects_.changed() && c.facts().loaded) c.submit(command::of(command::reread));
+}
+
+double build_watch::seconds_until_look(double now) const {
+  return last_check_ + period_ > now ? last_check_ + period_ - now : 0;
 }
 
 }  // namespace vvi

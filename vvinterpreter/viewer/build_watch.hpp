@@ -30,12 +30,15 @@ class build_watch {
   //! Looks at the files (at most every 0.25 s) and gives the controller
   //! what their changes ask for.
   void check(double now, model_controller& c);
+  //! How long until check() looks again (the window sleeps until then).
+  double seconds_until_look(double now) const;
 
  private:
   std::string model_;
   file_watch sources_, objects_;
   std::vector<file_watch::stamp> before_build_;
   std::vector<std::string> objects_watched_;
+  static constexpr double period_ = 0.25;
   double last_check_ = 0;
 };
 

@@ -4,6 +4,7 @@
 #include <backends/imgui_impl_glfw.h>
 #include <backends/imgui_impl_opengl2.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -100,9 +101,12 @@ void draw_one_frame(viewer_parts& v) {
   // No frame until there is something to show or do: a frame drawn in
   // software takes a core from the model and the compiler. Input, and the
   // end of a job or a build, wake the loop at once.
-  bool script_goes_on = !v.script.done() && c.idle();
-  v.window.wait_events(script_goes_on ? 0 : c.seconds_until_due(now_seconds()));
+  // The file watch looks on time too: a wake a moment early would skip a
+  // look and leave a save unseen for another quarter of a second.
   double t = now_seconds();
+  bool script_goes_on = !v.script.done() && c.idle();
+  v.window.wait_events(script_goes_on ? 0 : std::min(c.seconds_until_due(t), v.view.watch().seconds_until_look(t)));
+  t = now_seconds();
   v.view.watch().check(t, c);
   c.poll(t);
   v.script.feed(c);
