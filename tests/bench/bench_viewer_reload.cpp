@@ -111,6 +111,10 @@ double median(std::vector<double> v) {
 
 }  // namespace
 
+const char* const usage =
+    "usage: bench_viewer_reload [--runs R] [--steps N] [--interpreter PATH] [MODEL.vvp ...]\n"
+    "       (default: examples/loop.vvp and examples/korn_spalding.vvp)\n";
+
 int main(int argc, char** argv) {
   int runs = 5, steps = 2;
   std::vector<std::string> models;
@@ -119,7 +123,16 @@ int main(int argc, char** argv) {
     if (a == "--runs" && i + 1 < argc) runs = std::max(1, std::atoi(argv[++i]));
     else if (a == "--steps" && i + 1 < argc) steps = std::max(0, std::atoi(argv[++i]));
     else if (a == "--interpreter" && i + 1 < argc) interpreter = argv[++i];
+    else if (a == "--help" || a == "-h") return std::printf("%s", usage), 0;
+    else if (!a.empty() && a[0] == '-')
+      return std::fprintf(stderr, "bench_viewer_reload: unknown option %s\n%s", a.c_str(), usage), 2;
     else models.push_back(a);
+  }
+  // Every model is checked before any is timed: a typo ends the run at once.
+  for (const std::string& m : models) {
+    std::error_code ec;
+    if (!fs::is_regular_file(m, ec))
+      return std::fprintf(stderr, "bench_viewer_reload: %s: no such model file\n", m.c_str()), 2;
   }
   if (models.empty())
     for (const char* m : {"loop.vvp", "korn_spalding.vvp"}) models.push_back(std::string(VV_SOURCE_DIR) + "/examples/" + m);
