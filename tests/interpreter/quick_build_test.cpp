@@ -238,3 +238,39 @@ TEST(QuickBuild, ADamagedQuickHeaderIsBuiltAgain) {
   EXPECT_TRUE(contains(again.out, quick_note)) << report(again);
   EXPECT_TRUE(contains(again.out, "h=1.5 in 1\n")) << report(again);
 }
+
+// The code of the quick builds' header (its inline functions, compiled
+// once: compile/precompiled_header.hpp) is checked by its content before
+// each use: damaged, it is built again with a note, and the edit still
+// runs quick.
+TEST(QuickBuild, ADamagedQuickHeaderCodeIsBuiltAgain) {
+  const std::string dir = fresh_dir("quick_damaged_header_code");
+  const std::string cache = cache_with_header(dir);
+  const std::string model = dir + "m.vvp";
+  write(model, "#include <cstdio>\nvertex { double h; };\nmesh S;\n"
+               "start { vertex v; v$h = 2.5; add v to S; std::printf(\"h=%g in %zu\\n\", v$h, S.size()); }\n");
+  test_run::result first = run_in(dir, cache, {"--batch", "--expect-edits", model});
+  ASSERT_EQ(first.status, 0) << report(first);
+  // Each made a file of this cache's own (the suite's are linked in), then
+  // its first bytes overwritten: its size is as listed.
+  int damaged = 0;
+  for (const auto& e : fs::recursive_directory_iterator(cache + "/pch")) {
+    if (!e.is_regular_file() || e.path().filename() != "model.hpp.o") continue;
+    std::string code = e.path().string();
+    fs::copy_file(code, code + ".own");
+    fs::rename(code + ".own", code);
+    std::fstream f(code, std::ios::in | std::ios::out | std::ios::binary);
+    f.write(std::string(4096, '\0').data(), 4096);
+    ++damaged;
+  }
+  ASSERT_GT(damaged, 0);
+
+  edit(model, "an edit");
+  test_run::result edited = run_in(dir, cache, {"--batch", "--expect-edits", model});
+  EXPECT_EQ(edited.status, 0) << report(edited);
+  EXPECT_TRUE(contains(edited.out, quick_note)) << report(edited);
+  EXPECT_TRUE(contains(edited.out, "h=2.5 in 1\n")) << report(edited);
+  EXPECT_EQ(edited.err, model + ": note: the cached precompiled vvlib header of quick builds was damaged "
+                                "(model/model.hpp.o differs from what was built); it was built again\n")
+      << report(edited);
+}

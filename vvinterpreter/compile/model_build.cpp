@@ -184,6 +184,8 @@ struct model_builder {
         .add(command_line(flags))
         .add(stamp)
         .add(declarations_may_read_folder(declarations, model_dir) ? model_dir : "")
+        // Compiled with a header whose code is apart, it links with that code.
+        .add(header.codegen ? "codegen" : "")
         .add(declarations)
         .hex();
   }
@@ -225,6 +227,7 @@ void model_builder::name_the_build() {
   include = vvlib_include_dir();
   stamp = headers_stamp(include);
   flags = common_flags(s, include);
+  header = make_header_request(s.cache_dir, include, flags, config::cxx_compiler, config::cxx_compiler_is_clang, stamp);
   model_dir = absolute_folder_of(where.built());
   key = content_hash()
             .add(vvc::version())
@@ -276,6 +279,14 @@ std::vector<std::string> model_libraries() {
   return libraries;
 }
 
+// The header's code (precompiled_header.hpp), then model_libraries().
+std::vector<std::string> libraries_with_header(const std::string& header_dir, const header_request& header) {
+  std::vector<std::string> libraries = precompiled_header_link(header_dir, header);
+  std::vector<std::string> rest = model_libraries();
+  libraries.insert(libraries.end(), rest.begin(), rest.end());
+  return libraries;
+}
+
 // After an edit, when the optimised build's declarations' part is in the
 // cache: the program at -O0 with clang, linked with it (quick_build.hpp).
 // Anything else, a compile error included, leaves the build to g++, whose
@@ -302,7 +313,8 @@ std::optional<build_result> model_builder::quick_build() {
     notes += path + ": note: the cached precompiled vvlib header of quick builds was damaged (" + quick_damage +
              "); it was built again\n";
   if (header_dir.empty() || !make_work(quick_key)) return std::nullopt;
-  quick_job job{precompiled_header_file(header_dir, true), include, model_dir, work, part.object, model_libraries()};
+  quick_job job{precompiled_header_file(header_dir, true), include, model_dir, work, part.object,
+                libraries_with_header(header_dir, quick_pch)};
   std::vector<std::string> argv = quick_command(job);
   process_result c = run_process(argv);
   std::error_code ec;
@@ -336,9 +348,6 @@ bool model_builder::make_work(const std::string& build_key) {
 std::optional<build_result> model_builder::prepare_work() {
   say_compiling();
   t1 = std::chrono::steady_clock::now();
-  header = header_request{s.cache_dir, include, flags,
-                          content_hash().add(config::cxx_compiler).add(command_line(flags)).add(stamp).hex(),
-                          config::cxx_compiler, config::cxx_compiler_is_clang};
   if (quick_wanted()) {
     // The quick builds' header, for the edits to come: on the other core,
     // while g++ makes its own (a few seconds on one core).
@@ -361,12 +370,15 @@ std::optional<build_result> model_builder::prepare_work() {
 build_result model_builder::compile_and_store() {
   std::error_code ec;
   compile_job job;
-  job.libraries = model_libraries();
+  job.libraries = libraries_with_header(pch, header);
   job.work = work;
   job.niceness = s.in_background ? 10 : 0;
   job.cache_dir = s.cache_dir;
   job.include = include;
-  if (s.declarations_apart && !instrumented(flags)) {
+  // A part compiled with the header's code apart needs that code: without
+  // the header (it could not be built), the program compiles whole.
+  bool part_links = !header.codegen || !pch.empty();
+  if (s.declarations_apart && !instrumented(flags) && part_links) {
     // Shared by the same declarations in any folder, unless a header they
     // include could be found in the model's (compile/shared_declarations).
     job.declarations = shared_declarations();
@@ -393,7 +405,10 @@ build_result model_builder::compile_and_store() {
     // Damaged in a way its size does not show: build it again, once.
     notes += path + ": note: the compiler could not read the cached precompiled vvlib header; it was built again\n";
     discard_precompiled_header(pch);
-    job.compiler = compiler(precompiled_header_dir(header, damage, header_error));
+    pch = precompiled_header_dir(header, damage, header_error);
+    job.compiler = compiler(pch);
+    job.libraries = libraries_with_header(pch, header);
+    if (pch.empty() && header.codegen) job.declarations.clear();
     compiled = compile_model(job);
   }
   std::istringstream compile_notes(compiled.notes);

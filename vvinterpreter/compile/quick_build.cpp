@@ -1,7 +1,6 @@
 #include "compile/quick_build.hpp"
 
 #include "compile/build_config.hpp"
-#include "compile/hashing.hpp"
 #include "compile/process.hpp"
 
 namespace vvi {
@@ -16,10 +15,7 @@ std::vector<std::string> quick_flags(const std::string& include) {
 }
 
 header_request quick_header(const std::string& cache_dir, const std::string& include, const std::string& stamp) {
-  std::vector<std::string> flags = quick_flags(include);
-  return header_request{cache_dir, include, flags,
-                        content_hash().add(config::quick_compiler).add(command_line(flags)).add(stamp).hex(),
-                        config::quick_compiler, true};
+  return make_header_request(cache_dir, include, quick_flags(include), config::quick_compiler, true, stamp);
 }
 
 std::vector<std::string> quick_command(const quick_job& job) {

@@ -33,7 +33,7 @@ struct quick_job {
   std::string model_dir;               // the model's own headers
   std::string work;                    // holds model.cpp; model.so and model.d are made there
   std::string part;                    // the declarations' part's object
-  std::vector<std::string> libraries;  // -L, -l... for the link
+  std::vector<std::string> libraries;  // the header's code, -L, -l... for the link
 };
 
 //! The one command that compiles the program and links it with the part.
