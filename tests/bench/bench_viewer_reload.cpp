@@ -10,8 +10,8 @@
 // an editor saves (a new file renamed over the old). Each save is timed
 // until the viewer prints "reloaded": the new model has been compiled,
 // loaded and run again to the step the old one was at, and that frame
-// draws it. The time includes the viewer's file watch, which looks every
-// quarter of a second.
+// draws it. The time includes the viewer's file watch, which hears of a
+// save at once (inotify) and looks every quarter of a second besides.
 // Ends with one line per model: viewer_reload model=... median_ms=... min_ms=... max_ms=...
 #include <fcntl.h>
 #include <poll.h>
@@ -60,13 +60,19 @@ class running_viewer {
     close(ends[1]);
     fd_ = ends[0];
   }
-  ~running_viewer() {
+  ~running_viewer() { stop(); }
+
+  //! Ends the viewer, its supervisor and Xvfb (before the files they use
+  //! are removed: the viewer would hear of it and reload).
+  void stop() {
     if (pid_ > 0) {
       kill(-pid_, SIGKILL);
       int status = 0;
       waitpid(pid_, &status, 0);
+      pid_ = -1;
     }
     if (fd_ >= 0) close(fd_);
+    fd_ = -1;
   }
 
   //! Reads until the output holds `part` `count` times (true), or it ends
@@ -177,6 +183,7 @@ int main(int argc, char** argv) {
       }
       times.push_back(std::chrono::duration<double, std::milli>(clock_type::now() - saved).count());
     }
+    v.stop();
     fs::remove_all(scratch);
     if (times.empty()) continue;
     std::printf("%s: save -> new model drawn at step %d: %.0f ms (median of %zu: %.0f .. %.0f); target: under 1500 ms\n",

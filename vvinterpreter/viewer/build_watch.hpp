@@ -1,13 +1,15 @@
 // Continuous modelling: the model's source files and the files its file
-// objects read are watched (every quarter of a second); a saved source is
-// a `reload`, a saved file of a file object a `reread` (an event of the
-// model: the log keeps it).
+// objects read are watched; a saved source is a `reload`, a saved file of
+// a file object a `reread` (an event of the model: the log keeps it). They
+// are looked at when a save is told (file_events), and every quarter of a
+// second in any case.
 #pragma once
 
 #include <string>
 #include <vector>
 
 #include "compile/model_build.hpp"
+#include "viewer/file_events.hpp"
 #include "viewer/file_watch.hpp"
 
 namespace vvi {
@@ -27,17 +29,23 @@ class build_watch {
   //! them: watched from now (before the next job, so a save while it runs
   //! is a change).
   void model_files(const std::vector<std::string>& files);
-  //! Looks at the files (at most every 0.25 s) and gives the controller
-  //! what their changes ask for.
+  //! Looks at the files (when a save was told, else at most every 0.25 s)
+  //! and gives the controller what their changes ask for.
   void check(double now, model_controller& c);
   //! How long until check() looks again (the window sleeps until then).
   double seconds_until_look(double now) const;
+  //! Called from another thread when a watched file is saved (to wake the
+  //! window's loop).
+  wake_signal& saved() { return events_.saved(); }
 
  private:
+  void listen();  // the events of every watched file
+
   std::string model_;
   file_watch sources_, objects_;
   std::vector<file_watch::stamp> before_build_;
   std::vector<std::string> objects_watched_;
+  file_events events_;
   static constexpr double period_ = 0.25;
   double last_check_ = 0;
 };

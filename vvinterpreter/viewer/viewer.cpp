@@ -50,6 +50,7 @@ int run_viewer_window(const options& o, const state_record& from) {
   // The frame loop sleeps while a job or a build runs; their ends wake it.
   worker.job_ended().connect(gl_window::wake);
   controller.build_ended().connect(gl_window::wake);
+  view.watch().saved().connect(gl_window::wake);  // a save, at once
 
   controller.set_up();
   controller.submit(command::of(command::reload));  // the first build
@@ -57,6 +58,7 @@ int run_viewer_window(const options& o, const state_record& from) {
   controller.set_quitting();  // whatever happens now, no restart
   worker.job_ended().disconnect();  // no wake after the window has gone
   controller.build_ended().disconnect();
+  view.watch().saved().disconnect();
   if (controller.busy()) {  // closed while the model runs: it cannot be closed cleanly
     std::fflush(nullptr);
     _exit(0);
