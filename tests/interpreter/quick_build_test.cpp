@@ -58,6 +58,13 @@ std::vector<std::string> lines_of(const std::string& text) {
 
 const std::string quick_note = "(a quick build: unoptimised)";
 
+//! Makes a file of a test's cache its own, where cache_with_header linked
+//! in the suite's (in use by other tests), before the test damages it.
+void make_own(const std::string& path) {
+  fs::copy_file(path, path + ".own");
+  fs::rename(path + ".own", path);
+}
+
 }  // namespace
 
 // growing_ring has parallel loops (two threads here, even on its few
@@ -195,10 +202,7 @@ TEST(QuickBuild, ADamagedQuickHeaderIsBuiltAgain) {
     std::vector<std::string> found;
     for (const auto& e : fs::recursive_directory_iterator(cache + "/pch"))
       if (e.is_regular_file() && e.path().filename() == "model.hpp.pch") found.push_back(e.path().string());
-    for (const std::string& header : found) {
-      fs::copy_file(header, header + ".own");
-      fs::rename(header + ".own", header);
-    }
+    for (const std::string& header : found) make_own(header);
     return found;
   };
   std::vector<std::string> headers = quick_headers();
@@ -257,8 +261,7 @@ TEST(QuickBuild, ADamagedQuickHeaderCodeIsBuiltAgain) {
   for (const auto& e : fs::recursive_directory_iterator(cache + "/pch")) {
     if (!e.is_regular_file() || e.path().filename() != "model.hpp.o") continue;
     std::string code = e.path().string();
-    fs::copy_file(code, code + ".own");
-    fs::rename(code + ".own", code);
+    make_own(code);
     std::fstream f(code, std::ios::in | std::ios::out | std::ios::binary);
     f.write(std::string(4096, '\0').data(), 4096);
     ++damaged;
