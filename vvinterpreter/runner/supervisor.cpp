@@ -73,6 +73,20 @@ class supervisor_signals {
   //! The signal mask to wait with.
   const sigset_t* waiting_mask() const { return &waiting_mask_; }
 
+  //! Whether this process went on after a stop since last asked. A stop
+  //! outside ppoll leaves SIGCONT pending (blocked there): it is taken
+  //! here, or the time stopped would count against the model's block.
+  static bool took_continue() {
+    sigset_t only_continue;
+    sigemptyset(&only_continue);
+    sigaddset(&only_continue, SIGCONT);
+    timespec no_wait{};
+    bool pending = sigtimedwait(&only_continue, nullptr, &no_wait) == SIGCONT;
+    bool handled = continued != 0;
+    continued = 0;
+    return pending || handled;
+  }
+
  private:
   static constexpr int count = 5;
   const int signals_[count] = {SIGTERM, SIGINT, SIGHUP, SIGCHLD, SIGCONT};
@@ -102,12 +116,16 @@ class watch {
         break;
       }
       clock_type::time_point now = clock_type::now();
-      if (continued) {
+      if (supervisor_signals::took_continue()) {
         // This process was stopped (Ctrl+Z, with the model): that time is
         // not the model's. The last wake-up is at most a second before.
-        continued = 0;
+        // The clock is read again: the stop may fall after the first read.
+        now = clock_type::now();
         double away = seconds_between(last_wake_, now);
-        reader_.busy_since += std::chrono::duration_cast<clock_type::duration>(std::chrono::duration<double>(away));
+        // At most up to now: a block begun while this process was stopped
+        // is timed from when it was read.
+        reader_.busy_since = std::min(
+            now, reader_.busy_since + std::chrono::duration_cast<clock_type::duration>(std::chrono::duration<double>(away)));
         if (stopped_since_) *stopped_since_ = now;
       }
       last_wake_ = now;
