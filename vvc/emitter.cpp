@@ -100,12 +100,14 @@ class emitter {
              "// Programs call OpenGL without including it (vv 1.1 did so too).\n"
              "#include <GL/gl.h>\n\n"
              "struct vv_traits;\nusing vertex = vv::vertex<vv_traits>;\n"
-             "using mesh = vv::mesh<vv_traits>;\n"
-             "// The model object (model/program.hpp): the context, the proxy, the file\n"
+             "using mesh = vv::mesh<vv_traits>;\n");
+    model_object_begin_ = w_.str().size();
+    w_.generated("// The model object (model/program.hpp): the context, the proxy, the file\n"
              "// objects' registry. The first global, so that it outlives the others and\n"
              "// file objects find relative names beside the .vvp.\n"
              "static vv::model::program<vv_traits> vv_model(" + cpp_string_literal(o_.source_dir) + ");\n"
              "[[maybe_unused]] static vv::proxy& proxy = vv_model.host();\n");
+    model_object_end_ = w_.str().size();
     if (p_.last_property_item == p_.items.size()) model();
     for (std::size_t i = 0; i < p_.items.size(); ++i) {
       item(p_.items[i]);
@@ -116,6 +118,29 @@ class emitter {
                  "// model only while its code runs.\n"
                  "[[maybe_unused]] static const bool vv_globals_made = (vv_model.globals_made(), true);\n");
     return w_.str();
+  }
+
+  // The program apart from the header of its declarations (emit_apart):
+  // the model object, what follows the traits, and what the declarations
+  // hold that must exist once or names the model object (the parameters'
+  // definitions, execution blocks, actions, the pick block: written to
+  // moved_) go to the program, so that the header defines no variable.
+  program_apart run_apart() {
+    apart_ = true;
+    std::string cpp = run();
+    program_apart a;
+    a.header = cpp.substr(0, model_object_begin_) +
+               cpp.substr(model_object_end_, helpers_begin_ - model_object_end_) +
+               "#line 1 \"<vvc generated>\"\n"
+               "#include <model/common_operations.hpp>\n"
+               "[[maybe_unused]] static void vv_common_operations(vv::model::program<vv_traits>& vv_p, mesh& vv_m,\n"
+               "                                                  vertex vv_v, void (&vv_block)()) {\n"
+               "  vv::model::common_operations(vv_p, vv_m, vv_v, vv_block);\n}\n";
+    std::string moved = moved_.str();
+    if (!moved.empty() && moved.back() != '\n') moved += '\n';
+    a.program = cpp.substr(model_object_begin_, model_object_end_ - model_object_begin_) + moved +
+                cpp.substr(helpers_begin_);
+    return a;
   }
 
   // The declarations' part (see emit_declarations): the program up to its
@@ -142,6 +167,21 @@ class emitter {
  private:
   // ---- top level ----
   void item(const top_item& it) {
+    if (apart_ && !model_written_ && it.kind != top_item::preproc && it.kind != top_item::declaration &&
+        it.kind != top_item::property) {
+      // Before the traits, in the header: a parameter is declared there.
+      if (it.kind == top_item::parameter) {
+        const parameter& d = p_.parameters[it.parameter_index];
+        w_.at(*d.keyword);
+        w_.text("extern " + std::string(d.type->text) + " " + std::string(d.name->text) + ";");
+      }
+      std::swap(w_, moved_);
+      apart_ = false;
+      item(it);
+      apart_ = true;
+      std::swap(w_, moved_);
+      return;
+    }
     switch (it.kind) {
       case top_item::preproc: w_.preproc(*it.tok); break;
       case top_item::declaration: emit(it.cxx); break;
@@ -325,12 +365,15 @@ class emitter {
 
   // The traits, the model's context and the helpers the program calls.
   void model() {
+    model_written_ = true;
     std::string s = traits();
     // Compiled with the declarations' part, these come from there.
     s += "#ifdef VV_DECLARATIONS_APART\n";
     for (const char* what : apart_instantiations) s += std::string("extern template ") + what + ";\n";
     s += "#endif\n";
-    s +=
+    w_.generated(s);
+    helpers_begin_ = w_.str().size();
+    s =
         "vv::context<vv_traits>& vv_traits::context() { return vv_model.ctx(); }\n"
         "// The model's random numbers, seeded by the host (--seed).\n"
         "// Where is the caller's line: both are errors inside a parallel forall.\n"
@@ -780,11 +823,19 @@ class emitter {
   std::vector<global_variable> globals_;
   writer w_;
   std::unordered_set<const token*> value_init_;
+  // Where the model object begins and ends, and where the helpers after
+  // the traits begin, in run()'s text (run_apart splits it there).
+  std::size_t model_object_begin_ = 0, model_object_end_ = 0, helpers_begin_ = 0;
+  bool apart_ = false;          // run_apart: moving what the header must not hold
+  bool model_written_ = false;  // the traits are written: the declarations are over
+  writer moved_;                // what moves from the declarations to the program
 };
 
 }  // namespace
 
 std::string emit(const program& p, const emit_options& options) { return emitter(p, options).run(); }
+
+program_apart emit_apart(const program& p, const emit_options& options) { return emitter(p, options).run_apart(); }
 
 std::string emit_declarations(const program& p, const emit_options& options) {
   return emitter(p, options).run_declarations();

@@ -31,6 +31,20 @@ struct emit_options {
 
 std::string emit(const program& p, const emit_options& options);
 
+//! The model's text in two, for quick builds (vvinterpreter's
+//! compile/declarations_header.hpp): `header`, emit()'s text up to the
+//! traits and their extern templates, without the model object and with
+//! each parameter declared extern, then a call of the common operations
+//! (model/common_operations.hpp) for clang to instantiate there;
+//! `program`, the model object, the parameters' definitions and any
+//! execution block, action or pick block among the declarations, then the
+//! rest of emit()'s text. Compiled with the header precompiled, the program
+//! is the model emit() gives: the header defines no variable of its own.
+struct program_apart {
+  std::string header, program;
+};
+program_apart emit_apart(const program& p, const emit_options& options);
+
 //! The part of the model that depends only on its declarations (everything
 //! up to the last property block, and the traits): vvlib's file reading
 //! and writing and the plugin's mesh functions for the model's traits, the

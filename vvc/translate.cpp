@@ -23,6 +23,9 @@ void run(translation& t, const source_file& file, std::string source_dir) {
   std::string name = file.path.substr(file.path.find_last_of('/') + 1);
   emit_options options{version(), std::move(source_dir), name, t.sources.text_hash()};
   t.cpp = emit(p, options);
+  program_apart apart = emit_apart(p, options);
+  t.header = std::move(apart.header);
+  t.program = std::move(apart.program);
   t.declarations = emit_declarations(p, options);
   t.ok = true;
 }

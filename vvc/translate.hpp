@@ -13,6 +13,7 @@ struct translation {
   bool ok = false;
   std::string cpp;          // the C++ (empty unless ok)
   std::string declarations; // the part of it that depends only on its declarations (emit_declarations)
+  std::string header, program;  // cpp in two: the declarations' header and the rest (emit_apart)
   source_set sources;       // the files the diagnostics point into
   diagnostics diag;
   //! The fields each property block declares, in order (empty without the

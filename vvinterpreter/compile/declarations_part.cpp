@@ -26,28 +26,6 @@ std::string join(const std::vector<std::string>& argv) {
   return s;
 }
 
-// Writes the files of an entry into a work folder, then publishes it under
-// the key (every build its own folder, as for plugins).
-bool store(const std::string& folder, const std::string& work, const std::string& key,
-           const std::vector<cache::listed_file>& files) {
-  std::error_code ec;
-  if (!cache::write_manifest(work, files)) return false;
-  std::string build = key + "." + cache::unique_id();
-  fs::rename(work, folder + "/" + build, ec);
-  if (ec) return false;
-  cache::publish(folder, key, build);
-  return true;
-}
-
-std::string new_work_folder(const std::string& folder, const std::string& key) {
-  std::error_code ec;
-  fs::create_directories(folder, ec);
-  cache::remove_leftovers(folder);
-  std::string work = folder + "/tmp-" + key + "-" + cache::unique_id();
-  fs::create_directories(work, ec);
-  return ec ? "" : work;
-}
-
 }  // namespace
 
 declarations_part find_declarations(const std::string& cache_dir, const std::string& key) {
@@ -83,7 +61,7 @@ declarations_part build_declarations(const declarations_request& r) {
   declarations_part part = find_declarations(r.cache_dir, r.key);
   if (part.state != declarations_part::missing) return part;
   part = {};  // missing until stored
-  std::string work = new_work_folder(folder, r.key);
+  std::string work = cache::new_work_folder(folder, r.key);
   std::error_code ec;
   if (work.empty() || !write_file(work + "/declarations.cpp", r.cpp)) {
     fs::remove_all(work, ec);
@@ -109,7 +87,7 @@ declarations_part build_declarations(const declarations_request& r) {
   if (beyond.empty()) files.push_back({object_name, cache::check::content});
   else fs::remove(work + "/" + object_name, ec);
   fs::remove(work + "/declarations.d", ec);
-  if (!written || !store(folder, work, r.key, files)) {
+  if (!written || !cache::store(folder, work, r.key, files)) {
     fs::remove_all(work, ec);
     part.why = "cannot store the declarations' part in the model cache";
     return part;
@@ -119,10 +97,10 @@ declarations_part build_declarations(const declarations_request& r) {
 
 void record_unusable(const std::string& cache_dir, const std::string& key, const std::string& why) {
   std::string folder = folder_of(cache_dir);
-  std::string work = new_work_folder(folder, key);
+  std::string work = cache::new_work_folder(folder, key);
   std::error_code ec;
   if (work.empty() || !write_file(work + "/" + verdict_name, why) ||
-      !store(folder, work, key, {{verdict_name, cache::check::content}}))
+      !cache::store(folder, work, key, {{verdict_name, cache::check::content}}))
     fs::remove_all(work, ec);
 }
 

@@ -8,12 +8,16 @@
 
 namespace vvi {
 
-std::string dependency_list(const std::string& depfile, const std::string& include) {
+std::string dependency_list(const std::string& depfile, const std::string& include, const std::string& cache_dir) {
   std::string text = read_file(depfile).value_or("");
   std::string out;
   std::istringstream words(text);
+  auto under = [](const std::string& w, const std::string& folder) {
+    return !folder.empty() && w.rfind(folder + "/", 0) == 0;
+  };
   for (std::string w; words >> w;) {
-    if (w == "\\" || ends_with(w, ":") || w.rfind(include, 0) == 0 || w.rfind("/usr/", 0) == 0) continue;
+    if (w == "\\" || ends_with(w, ":") || w.rfind(include, 0) == 0 || w.rfind("/usr/", 0) == 0 || under(w, cache_dir))
+      continue;
     if (!ends_with(w, ".cpp")) out += content_hash().add(read_file(w).value_or("")).hex() + " " + w + "\n";
   }
   return out;

@@ -10,8 +10,10 @@ namespace vvi {
 
 //! From the compiler's make-style dependency file (-MD -MF): one line
 //! "HASH PATH" per header of the model's own (not under `include`, not
-//! under /usr/, not the compiled source itself).
-std::string dependency_list(const std::string& depfile, const std::string& include);
+//! under /usr/, not in the model cache `cache_dir`, whose entries are
+//! checked by their own manifests, not the compiled source itself).
+std::string dependency_list(const std::string& depfile, const std::string& include,
+                            const std::string& cache_dir = "");
 
 //! Whether every file of the list still has its hash.
 bool dependencies_unchanged(const std::string& list);

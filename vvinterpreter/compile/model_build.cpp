@@ -19,6 +19,7 @@
 #include "compile/model_cache.hpp"
 #include "compile/model_compile.hpp"
 #include "compile/model_path.hpp"
+#include "compile/declarations_header.hpp"
 #include "compile/declarations_part.hpp"
 #include "compile/precompiled_header.hpp"
 #include "compile/process.hpp"
@@ -189,6 +190,14 @@ struct model_builder {
         .add(declarations)
         .hex();
   }
+  //! The quick builds' header of the declarations on the vvlib header
+  //! `vvlib_pch`, found or built (niceness: that of its compiler).
+  declarations_header declarations_header_on(const std::string& vvlib_pch, int niceness) const {
+    declarations_header_request request =
+        quick_declarations_header(s.cache_dir, include, model_dir, vvlib_pch, t.header);
+    request.niceness = niceness;
+    return build_declarations_header(request);
+  }
   //! The file and how it is compiled, whatever its text (build_history.hpp).
   std::string history_key() const {
     return content_hash().add(model_dir).add(fs::path(where.built()).filename().string()).add(command_line(flags)).hex();
@@ -315,17 +324,34 @@ std::optional<build_result> model_builder::quick_build() {
   if (header_dir.empty() || !make_work(quick_key)) return std::nullopt;
   quick_job job{precompiled_header_file(header_dir, true), include, model_dir, work, part.object,
                 libraries_with_header(header_dir, quick_pch)};
+  // The program alone, on the header of its declarations (made by the first
+  // build, or now, once); without one, the whole text.
+  declarations_header declared = declarations_header_on(job.header_file, 0);
+  if (!declared.damage.empty()) notes += path + ": note: " + declared.damage + "; it was built again\n";
+  bool apart = declared.state == declarations_header::usable && write_file(work + "/program.cpp", t.program);
+  if (apart) {
+    job.header_file = declared.pch;
+    job.source = "program.cpp";
+    job.libraries.insert(job.libraries.begin(), declared.object);
+  }
   std::vector<std::string> argv = quick_command(job);
   process_result c = run_process(argv);
   std::error_code ec;
   if (c.status != 0) {
-    if (unreadable_precompiled_header(c.output)) discard_precompiled_header(header_dir);
+    if (unreadable_precompiled_header(c.output)) {
+      // The header of the declarations, or the vvlib header under it: the
+      // one the compiler names is built again at the next edit.
+      if (apart) discard_declarations_header(declared.pch);
+      if (!apart || c.output.find(header_dir) != std::string::npos) discard_precompiled_header(header_dir);
+    }
     fs::remove_all(work, ec);
     return std::nullopt;
   }
   r.compile_ms = ms_since(t1);
   message_sources sources{include, t.cpp, {t.fields.edge, t.fields.vertex, t.fields.mesh}};
-  build_result done = store(quick_key, compiler_messages(c.output, sources), command_line(argv) + "\n");
+  // The declarations' warnings were said when their header was compiled.
+  std::string said = apart ? declared.warnings + c.output : c.output;
+  build_result done = store(quick_key, compiler_messages(said, sources), command_line(argv) + "\n");
   done.quick = done.ok;
   return done;
 }
@@ -351,10 +377,15 @@ std::optional<build_result> model_builder::prepare_work() {
   if (quick_wanted()) {
     // The quick builds' header, for the edits to come: on the other core,
     // while g++ makes its own (a few seconds on one core).
+    // Then, for the same edits, the header of this model's declarations,
+    // at a lower priority than the build the user waits for.
     header_request quick_pch = quick_header(s.cache_dir, include, stamp);
-    quick_header_made = std::async(std::launch::async, [quick_pch] {
+    quick_header_made = std::async(std::launch::async, [this, quick_pch] {
       std::string damaged, error;
-      return precompiled_header_dir(quick_pch, damaged, error);
+      std::string made = precompiled_header_dir(quick_pch, damaged, error);
+      if (!made.empty() && s.declarations_apart && s.declarations_header_ahead)
+        declarations_header_on(precompiled_header_file(made, true), 10);
+      return made;
     });
   }
   pch = precompiled_header_dir(header, damage, header_error);
@@ -433,7 +464,7 @@ build_result model_builder::compile_and_store() {
 build_result model_builder::store(const std::string& build_key, const std::string& about_model,
                                   const std::string& commands) {
   std::error_code ec;
-  std::string deps = dependency_list(work + "/model.d", include);
+  std::string deps = dependency_list(work + "/model.d", include, s.cache_dir);
   bool stored = write_file(work + "/deps", deps) && write_file(work + "/warnings", about_model) &&
                 write_file(work + "/command", commands) &&  // how it was built, for whoever looks
                 cache::write_manifest(work, build_files);   // last: the build is whole

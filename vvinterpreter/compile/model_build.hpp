@@ -30,6 +30,12 @@ struct build_settings {
   //! is then asked for with quick off. A cached optimised build is used
   //! first. Also makes clang's precompiled header beside g++'s.
   bool quick = false;
+  //! With quick: make the quick builds' header of the model's declarations
+  //! (declarations_header.hpp) while the first build compiles, so that the
+  //! first edit is as quick as the next (the viewer a person edits in, and
+  //! --expect-edits); otherwise at the first edit (a scripted viewer, which
+  //! seldom edits).
+  bool declarations_header_ahead = false;
   //! The optimised build behind a quick one: its compiler runs at a lower
   //! priority (nice 10), so that the next edit's quick build and the
   //! running model come first.

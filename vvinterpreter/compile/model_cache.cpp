@@ -153,6 +153,26 @@ void remove_leftovers(const std::string& folder, std::chrono::seconds age) {
   }
 }
 
+std::string new_work_folder(const std::string& folder, const std::string& key) {
+  std::error_code ec;
+  fs::create_directories(folder, ec);
+  remove_leftovers(folder);
+  std::string work = folder + "/tmp-" + key + "-" + unique_id();
+  fs::create_directories(work, ec);
+  return ec ? "" : work;
+}
+
+bool store(const std::string& folder, const std::string& work, const std::string& key,
+           const std::vector<listed_file>& files) {
+  if (!write_manifest(work, files)) return false;
+  std::string build = key + "." + unique_id();
+  std::error_code ec;
+  fs::rename(work, folder + "/" + build, ec);
+  if (ec) return false;
+  publish(folder, key, build);
+  return true;
+}
+
 build_lock::build_lock(const std::string& folder, const std::string& key) {
   std::error_code ec;
   fs::create_directories(folder, ec);

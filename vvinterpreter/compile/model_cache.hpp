@@ -43,6 +43,16 @@ verdict verify(const std::string& dir, std::string& why);
 //! rename. An older cache's real folder under the key's name is replaced.
 void publish(const std::string& folder, const std::string& key, const std::string& build);
 
+//! A new work folder tmp-KEY-ID in `folder` (made, with `folder`, if need
+//! be; old leftovers there removed first), or "" when it cannot be made.
+std::string new_work_folder(const std::string& folder, const std::string& key);
+
+//! Ends a build made in `work`: its manifest of `files`, then the folder
+//! renamed to `folder`/KEY.ID and published under the key. False when
+//! that fails (the work folder is then the caller's to remove).
+bool store(const std::string& folder, const std::string& work, const std::string& key,
+           const std::vector<listed_file>& files);
+
 //! How old a leftover must be before the next build removes it: far more
 //! than any build takes, so a build in progress elsewhere is never touched.
 inline constexpr std::chrono::seconds leftover_age{3600};

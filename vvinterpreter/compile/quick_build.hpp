@@ -14,6 +14,7 @@
 #include <string>
 #include <vector>
 
+#include "compile/declarations_header.hpp"
 #include "compile/precompiled_header.hpp"
 
 namespace vvi {
@@ -27,13 +28,25 @@ std::vector<std::string> quick_flags(const std::string& include);
 //! The precompiled header of quick builds, in the cache's pch/ folder.
 header_request quick_header(const std::string& cache_dir, const std::string& include, const std::string& stamp);
 
+//! What the program is compiled with besides quick_flags(), and so the
+//! header of its declarations too (they must match).
+std::vector<std::string> quick_program_flags(const std::string& model_dir);
+
+//! The header of a model's declarations (declarations_header.hpp) for
+//! quick builds on the vvlib header `vvlib_pch`: `text` is vvc's
+//! (translation::header).
+declarations_header_request quick_declarations_header(const std::string& cache_dir, const std::string& include,
+                                                      const std::string& model_dir, const std::string& vvlib_pch,
+                                                      const std::string& text);
+
 struct quick_job {
-  std::string header_file;             // model.hpp.pch
+  std::string header_file;             // model.hpp.pch, or the declarations' header.hpp.pch
   std::string include;                 // vvlib's headers
   std::string model_dir;               // the model's own headers
-  std::string work;                    // holds model.cpp; model.so and model.d are made there
+  std::string work;                    // holds the source; model.so and model.d are made there
   std::string part;                    // the declarations' part's object
-  std::vector<std::string> libraries;  // the header's code, -L, -l... for the link
+  std::vector<std::string> libraries;  // the headers' code, -L, -l... for the link
+  std::string source = "model.cpp";    // in work: the whole text, or the program apart from its header
 };
 
 //! The one command that compiles the program and links it with the part.

@@ -18,6 +18,7 @@ build_settings build_settings_for(const options& o, bool force) {
   s.force = force || o.rebuild;  // --rebuild: batch and --compile-only build once
   // The viewer is there to edit the model (compile/build_history.hpp).
   s.part_from_the_first_build = o.expect_edits || !(o.batch || o.compile_only);
+  s.declarations_header_ahead = o.expect_edits || (!(o.batch || o.compile_only) && o.script.empty());
   s.build_cores = o.build_cores;
   return s;
 }
