@@ -243,10 +243,11 @@ TEST(QuickBuild, ADamagedQuickHeaderIsBuiltAgain) {
   EXPECT_TRUE(contains(again.out, "h=1.5 in 1\n")) << report(again);
 }
 
-// The code of the quick builds' header (its inline functions, compiled
-// once: compile/precompiled_header.hpp) is checked by its content before
-// each use: damaged, it is built again with a note, and the edit still
-// runs quick.
+// The code of the quick builds' headers (their inline functions and
+// templates, compiled once: compile/precompiled_header.hpp and
+// compile/declarations_header.hpp) is checked by its content before each
+// use: damaged, it is built again with a note, and the edit still runs
+// quick.
 TEST(QuickBuild, ADamagedQuickHeaderCodeIsBuiltAgain) {
   const std::string dir = fresh_dir("quick_damaged_header_code");
   const std::string cache = cache_with_header(dir);
@@ -276,4 +277,24 @@ TEST(QuickBuild, ADamagedQuickHeaderCodeIsBuiltAgain) {
   EXPECT_EQ(edited.err, model + ": note: the cached precompiled vvlib header of quick builds was damaged "
                                 "(model/model.hpp.o differs from what was built); it was built again\n")
       << report(edited);
+
+  // The code of the header of the model's declarations
+  // (compile/declarations_header.hpp), made on the new vvlib header by
+  // that edit: damaged, it too is built again with a note.
+  std::vector<std::string> declarations_code;
+  for (const auto& e : fs::recursive_directory_iterator(cache + "/decl-headers"))
+    if (e.is_regular_file() && e.path().filename() == "header.hpp.o") declarations_code.push_back(e.path().string());
+  ASSERT_FALSE(declarations_code.empty());
+  for (const std::string& code : declarations_code) {
+    std::fstream f(code, std::ios::in | std::ios::out | std::ios::binary);
+    f.write(std::string(4096, '\0').data(), 4096);
+  }
+  edit(model, "another edit");
+  test_run::result again = run_in(dir, cache, {"--batch", "--expect-edits", model});
+  EXPECT_EQ(again.status, 0) << report(again);
+  EXPECT_TRUE(contains(again.out, quick_note)) << report(again);
+  EXPECT_TRUE(contains(again.out, "h=2.5 in 1\n")) << report(again);
+  EXPECT_EQ(again.err, model + ": note: the cached header of the declarations was damaged "
+                               "(header.hpp.o differs from what was built); it was built again\n")
+      << report(again);
 }
