@@ -65,6 +65,12 @@ void make_own(const std::string& path) {
   fs::rename(path + ".own", path);
 }
 
+//! Damage a cached file as a disk might: its first bytes zeroed, its size as listed.
+void zero_the_start(const std::string& path) {
+  std::fstream f(path, std::ios::in | std::ios::out | std::ios::binary);
+  f.write(std::string(4096, '\0').data(), 4096);
+}
+
 }  // namespace
 
 // growing_ring has parallel loops (two threads here, even on its few
@@ -226,10 +232,7 @@ TEST(QuickBuild, ADamagedQuickHeaderIsBuiltAgain) {
   // may differ in size by a few bytes: clang records where it was made).
   headers = quick_headers();
   ASSERT_FALSE(headers.empty());
-  for (const std::string& header : headers) {
-    std::fstream f(header, std::ios::in | std::ios::out | std::ios::binary);
-    f.write(std::string(4096, '\0').data(), 4096);
-  }
+  for (const std::string& header : headers) zero_the_start(header);
   edit(model, "second edit");
   test_run::result unreadable = run_in(dir, cache, {"--batch", "--expect-edits", model});
   EXPECT_EQ(unreadable.status, 0) << report(unreadable);
@@ -263,8 +266,7 @@ TEST(QuickBuild, ADamagedQuickHeaderCodeIsBuiltAgain) {
     if (!e.is_regular_file() || e.path().filename() != "model.hpp.o") continue;
     std::string code = e.path().string();
     make_own(code);
-    std::fstream f(code, std::ios::in | std::ios::out | std::ios::binary);
-    f.write(std::string(4096, '\0').data(), 4096);
+    zero_the_start(code);
     ++damaged;
   }
   ASSERT_GT(damaged, 0);
@@ -285,10 +287,7 @@ TEST(QuickBuild, ADamagedQuickHeaderCodeIsBuiltAgain) {
   for (const auto& e : fs::recursive_directory_iterator(cache + "/decl-headers"))
     if (e.is_regular_file() && e.path().filename() == "header.hpp.o") declarations_code.push_back(e.path().string());
   ASSERT_FALSE(declarations_code.empty());
-  for (const std::string& code : declarations_code) {
-    std::fstream f(code, std::ios::in | std::ios::out | std::ios::binary);
-    f.write(std::string(4096, '\0').data(), 4096);
-  }
+  for (const std::string& code : declarations_code) zero_the_start(code);
   edit(model, "another edit");
   test_run::result again = run_in(dir, cache, {"--batch", "--expect-edits", model});
   EXPECT_EQ(again.status, 0) << report(again);
