@@ -57,8 +57,9 @@ bool instrumented(const std::vector<std::string>& flags) {
 std::vector<std::string> common_flags(const build_settings& s, const std::string& include) {
   // Line tables always (crash reports name .vvp lines); --debug: all of it.
   // DWARF 4: binutils 2.40's addr2line names the .cpp for a model's first code in DWARF 5.
+  // The version comes first: to clang, -gdwarf-4 after -g1 means full debug information.
   std::vector<std::string> f = {"-std=c++17", s.debug ? "-O0" : "-O" + std::to_string(s.optimization),
-                                s.debug ? "-g" : "-g1", "-gdwarf-4", "-fPIC",
+                                "-gdwarf-4", s.debug ? "-g" : "-g1", "-fPIC",
                                 "-fvisibility=hidden", "-fvisibility-inlines-hidden",
                                 // parallel forall (vv/parallel.hpp)
                                 "-fopenmp"};

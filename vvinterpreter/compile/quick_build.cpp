@@ -10,8 +10,9 @@ bool quick_builds_available() { return *config::quick_compiler != '\0'; }
 
 std::vector<std::string> quick_flags(const std::string& include) {
   // As the optimised build's (model_build.cpp), but -O0: line tables for
-  // crash reports, the same visibility, OpenMP for parallel forall.
-  return {"-std=c++17", "-O0",       "-g1",     "-gdwarf-4", "-fPIC", "-fvisibility=hidden", "-fvisibility-inlines-hidden",
+  // crash reports (the DWARF version before -g1, or clang writes all of
+  // the debug information), the same visibility, OpenMP for parallel forall.
+  return {"-std=c++17", "-O0",       "-gdwarf-4", "-g1",     "-fPIC", "-fvisibility=hidden", "-fvisibility-inlines-hidden",
           "-fopenmp",   "-isystem", include};
 }
 
