@@ -405,6 +405,7 @@ build_result model_builder::compile_and_store() {
   job.libraries = libraries_with_header(pch, header);
   job.work = work;
   job.niceness = s.in_background ? 10 : 0;
+  job.cancel = s.cancel;
   job.cache_dir = s.cache_dir;
   job.include = include;
   // A part compiled with the header's code apart needs that code: without
@@ -433,6 +434,12 @@ build_result model_builder::compile_and_store() {
   };
   job.compiler = compiler(pch);
   compile_outcome compiled = compile_model(job);
+  if (compiled.result.cancelled) {
+    fs::remove_all(work, ec);
+    r.cancelled = true;
+    r.error = path + ": the build was cancelled";
+    return r;
+  }
   if (compiled.result.status != 0 && !pch.empty() && unreadable_precompiled_header(compiled.result.output)) {
     // Damaged in a way its size does not show: build it again, once.
     notes += path + ": note: the compiler could not read the cached precompiled vvlib header; it was built again\n";

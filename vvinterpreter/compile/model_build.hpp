@@ -4,6 +4,7 @@
 // that did not change starts without compiling.
 #pragma once
 
+#include <atomic>
 #include <functional>
 #include <string>
 #include <vector>
@@ -40,6 +41,11 @@ struct build_settings {
   //! priority (nice 10), so that the next edit's quick build and the
   //! running model come first.
   bool in_background = false;
+  //! Once set (by another thread), the program's compiler is stopped and
+  //! the build fails as cancelled, leaving nothing in the cache: an
+  //! optimised build that a newer edit made stale, or one the viewer
+  //! closes on.
+  const std::atomic<bool>* cancel = nullptr;
   //! The most cores a new model's build counts as idle, 0: no limit
   //! (build_cores.hpp). With one, a new model is compiled whole.
   unsigned build_cores = 0;
@@ -60,6 +66,7 @@ struct build_result {
   std::vector<std::string> sources;
   bool cached = false;
   bool quick = false;  // unoptimised (settings.quick): the optimised build is still to come
+  bool cancelled = false;  // stopped by settings.cancel (not ok)
   double translate_ms = 0, compile_ms = 0;
 };
 

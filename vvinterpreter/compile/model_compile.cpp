@@ -56,7 +56,7 @@ class compilation {
 
   process_result run(const std::vector<std::string>& argv) {
     out_.commands += command_line(argv) + "\n";
-    return run_process(argv, j_.niceness);
+    return run_process(argv, j_.niceness, j_.cancel);
   }
 
   compile_outcome whole() {
@@ -76,7 +76,9 @@ class compilation {
     declarations_part part = building.get();
     out_.commands += "(the declarations' part: " + j_.cache_dir + "/decls/" + j_.declarations_key + "/command)\n";
     std::error_code ec;
-    if (part.state == declarations_part::usable && program.status != 0) {
+    if (program.cancelled || (part.state == declarations_part::usable && program.status != 0)) {
+      // Cancelled: nothing is concluded of the part, nor compiled whole.
+      std::filesystem::remove(object(), ec);
       out_.result = program;
       return out_;
     }
@@ -84,6 +86,10 @@ class compilation {
       process_result linked = run(j_.compiler + std::vector<std::string>{"-shared", "-o", so(), object(), part.object} +
                                   j_.libraries);
       std::filesystem::remove(object(), ec);
+      if (linked.cancelled) {
+        out_.result = linked;
+        return out_;
+      }
       if (linked.status == 0) {
         out_.apart = true;
         out_.result = {0, program.output + linked.output};  // the program's warnings
@@ -104,7 +110,7 @@ class compilation {
   // the cache remembers, and later builds go straight to it.
   compile_outcome whole_instead(const std::string& why) {
     whole();
-    if (out_.result.status == 0) record_unusable(j_.cache_dir, j_.declarations_key, why);
+    if (out_.result.status == 0 && !out_.result.cancelled) record_unusable(j_.cache_dir, j_.declarations_key, why);
     return out_;
   }
 

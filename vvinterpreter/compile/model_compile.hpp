@@ -26,6 +26,9 @@ struct compile_job {
   //! No part for the declarations yet: make it now (else compile whole).
   bool make_part = true;
   int niceness = 0;  // of the compiler's processes (build_settings::in_background)
+  //! Once set, the program's compiler is stopped and the outcome is
+  //! `cancelled` (build_settings::cancel).
+  const std::atomic<bool>* cancel = nullptr;
 };
 
 struct compile_outcome {

@@ -64,6 +64,9 @@ model_controller::model_controller(const options& o, model_jobs& jobs, controlle
 }
 
 model_controller::~model_controller() {
+  // Closing: no compiler is waited for, nor left running.
+  cancel_build_ = true;
+  cancel_optimised_ = true;
   if (building_) build_.wait();
   if (optimising_) optimised_.wait();
 }

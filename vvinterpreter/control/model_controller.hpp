@@ -193,6 +193,10 @@ class model_controller {
   bool keep_error_once_ = false;
   bool building_ = false, build_cached_ = false;
   wake_signal build_ended_;  // before the builds' futures, whose threads call it
+  // Set, they stop the build's or the optimised build's compiler: when the
+  // controller closes, and for a stale optimised build once a newer
+  // program compiles (before the futures, whose threads read them).
+  std::atomic<bool> cancel_build_{false}, cancel_optimised_{false};
   unsigned long builds_taken_ = 0;  // results taken from those futures
   std::future<build_result> build_;
   // The optimised build beside a quick one, and the build it is for (a

@@ -22,8 +22,17 @@ void model_controller::start_build(bool force) {
   model_runner::build_kind kind = policy_.swap_in_optimised && !force ? model_runner::build_kind::quick_first
                                                                       : model_runner::build_kind::usual;
   wake_signal* ended = &build_ended_;
-  build_ = std::async(std::launch::async, [runner, force, view, kind, ended] {
-    build_result b = runner->build(force, [view] { view->compiling(); }, kind);
+  std::atomic<bool>* cancel = &cancel_build_;
+  std::atomic<bool>* stale_optimised = &cancel_optimised_;
+  cancel->store(false);
+  build_ = std::async(std::launch::async, [runner, force, view, kind, ended, cancel, stale_optimised] {
+    auto compiling = [view, stale_optimised] {
+      // A new program: the optimised build of the one before would only be
+      // thrown away, and holds up this one's.
+      stale_optimised->store(true);
+      view->compiling();
+    };
+    build_result b = runner->build(force, compiling, kind, cancel);
     (*ended)();
     return b;
   });
@@ -40,8 +49,10 @@ void model_controller::start_optimising() {
   optimising_for_ = builds_started_;
   const model_runner* runner = &runner_;
   wake_signal* ended = &build_ended_;
-  optimised_ = std::async(std::launch::async, [runner, ended] {
-    build_result b = runner->build(false, {}, model_runner::build_kind::behind_quick);
+  std::atomic<bool>* cancel = &cancel_optimised_;
+  cancel->store(false);
+  optimised_ = std::async(std::launch::async, [runner, ended, cancel] {
+    build_result b = runner->build(false, {}, model_runner::build_kind::behind_quick, cancel);
     (*ended)();
     return b;
   });
@@ -52,7 +63,7 @@ void model_controller::finish_optimising() {
   optimising_ = false;
   build_result b = optimised_.get();
   ++builds_taken_;
-  if (optimise_again_ || optimising_for_ != builds_started_ || building_) {
+  if (b.cancelled || optimise_again_ || optimising_for_ != builds_started_ || building_) {
     // A newer build came meanwhile: its own optimised build follows it.
     if (optimise_again_ && !building_) start_optimising();
     return;

@@ -14,7 +14,7 @@ namespace {
 
 // The strip, left to right, in pixels: a gap that keeps the bar off the
 // scene, the bar, its ticks, the labels, a margin.
-constexpr int gap = 16, bar_width = 16, tick = 4, label_gap = 4, margin = 10;
+constexpr int gap = 16, bar_width = 16, tick_length = 4, label_gap = 4, margin = 10;
 // The bar runs over the middle half of the picture's height.
 constexpr double bar_bottom = 0.25, bar_top = 0.75;
 
@@ -38,7 +38,7 @@ void colour_bar::set(double lo, double hi, const std::string& name) {
 int colour_bar::strip_width(int width) const {
   int labels = 0;
   for (const auto& t : ticks_) labels = std::max(labels, font_.width(t.first));
-  int w = std::max(gap + bar_width + tick + label_gap + labels, gap + font_.width(name_)) + margin;
+  int w = std::max(gap + bar_width + tick_length + label_gap + labels, gap + font_.width(name_)) + margin;
   return std::min(w, width / 3);  // a narrow picture keeps most of its width for the model
 }
 
@@ -60,13 +60,13 @@ void colour_bar::draw(int width, int height) const {
   for (const auto& t : ticks_) {
     double y = std::min(y0 + (y1 - y0) * t.second, y1 - 1) + 0.5;  // the top tick on the bar's last row
     glVertex2d(x1, y);
-    glVertex2d(x1 + tick, y);
+    glVertex2d(x1 + tick_length, y);
   }
   glEnd();
   // Labels centred on their ticks; rows counted from the top.
   for (const auto& t : ticks_) {
     int centre = height - static_cast<int>(y0 + (y1 - y0) * t.second);
-    font_.draw(t.first, x1 + tick + label_gap, centre - line / 2, ink, height);
+    font_.draw(t.first, x1 + tick_length + label_gap, centre - line / 2, ink, height);
   }
   int top = height - static_cast<int>(y1);
   font_.draw(name_, x0, top - line / 2 - 4 - line, ink, height);

@@ -39,8 +39,10 @@ model_runner::model_runner(const options& o) : o_(o) {
   for (const auto& [name, text] : o.parameter_values) settings_.push_back({name, "", text});
 }
 
-build_result model_runner::build(bool force, std::function<void()> compiling, build_kind kind) const {
+build_result model_runner::build(bool force, std::function<void()> compiling, build_kind kind,
+                                 const std::atomic<bool>* stop) const {
   build_settings s = build_settings_for(o_, force);
+  s.cancel = stop;
   s.compiling = std::move(compiling);
   s.quick = kind == build_kind::quick_first;
   s.in_background = kind == build_kind::behind_quick;

@@ -28,8 +28,10 @@ class model_runner {
   //! touch the running model, so it may run beside it on another thread.
   //! As usual; an edit's quick build where one can be made; the optimised
   //! build behind a quick one (compile/model_build.hpp: quick, in_background).
+  //! `stop`: once set, the build stops (build_settings::cancel).
   enum class build_kind { usual, quick_first, behind_quick };
-  build_result build(bool force, std::function<void()> compiling = {}, build_kind kind = build_kind::usual) const;
+  build_result build(bool force, std::function<void()> compiling = {}, build_kind kind = build_kind::usual,
+                     const std::atomic<bool>* stop = nullptr) const;
 
   //! A fresh instance of a plugin: loaded (every global initialised anew),
   //! started, then stepped `steps` times so a reload comes back to where the
