@@ -1,7 +1,8 @@
-// Recycled storage of short vectors of handles (vv/detail/handle_blocks.hpp
-// and the allocator in vv/vertex.hpp): a translated program's vectors of
-// vertices reuse freed blocks of 1, 2, 4 and 8 handles; other sizes, other
-// traits and parallel loops use the heap; the handles stay counted right
+// Vectors of handles (vv/handle_vector.hpp) and their recycled storage
+// (vv/detail/handle_blocks.hpp): a vector of vertices is a standard vector
+// whose first push makes room for four; a translated program's vectors
+// reuse freed blocks of 1, 2, 4 and 8 handles; other sizes, other traits
+// and parallel loops use the heap; the handles stay counted right
 // throughout; a context's destruction frees what it kept.
 //
 // The recycling is turned on here even under AddressSanitizer (where the
@@ -17,6 +18,8 @@
 #include <cstdlib>
 #include <memory>
 #include <new>
+#include <type_traits>
+#include <utility>
 #include <vector>
 
 #include <vv/vv.hpp>
@@ -112,6 +115,70 @@ TEST_F(HandleBlocks, AGrowingVectorOfHandlesReachesTheHeapOnlyBeyondEight) {
   EXPECT_EQ(blocks_made, made);
   std::vector<vertex> longer(9, v);
   EXPECT_EQ(blocks_made, made + 1);
+}
+
+TEST_F(HandleBlocks, TheFirstPushMakesRoomForFourHandlesFromAKeptBlock) {
+  vertex v = ctx().new_vertex();
+  const vertex* kept;
+  {
+    std::vector<vertex> corners(4, v);
+    kept = corners.data();
+  }
+  const long made = blocks_made;
+  std::vector<vertex> pushed;
+  EXPECT_EQ(pushed.capacity(), 0u);  // an empty vector holds no block
+  pushed.push_back(v);
+  EXPECT_EQ(pushed.capacity(), 4u);
+  EXPECT_EQ(pushed.data(), kept);
+  EXPECT_EQ(blocks_made, made);
+  for (int i = 0; i < 3; ++i) pushed.push_back(v);
+  EXPECT_EQ(pushed.data(), kept) << "four handles fit without moving";
+  EXPECT_EQ(pushed.size(), 4u);
+
+  std::vector<vertex> emplaced;
+  emplaced.emplace_back(v);
+  EXPECT_EQ(emplaced.capacity(), 4u);
+  std::vector<vertex> moved_in;
+  moved_in.push_back(vertex(v));
+  EXPECT_EQ(moved_in.capacity(), 4u);
+  EXPECT_EQ(ctx().refs(v.slot()), 1u + 4u + 1u + 1u);  // v and the three vectors
+}
+
+TEST_F(HandleBlocks, AVectorOfHandlesIsAStandardVector) {
+  using vector = std::vector<vertex>;
+  // Its allocator rebinds to itself, so the vector's blocks are recycled.
+  static_assert(std::is_same<std::allocator_traits<vector::allocator_type>::rebind_alloc<vertex>,
+                             vector::allocator_type>::value);
+  static_assert(std::is_same<vector::value_type, vertex>::value);
+  static_assert(std::is_nothrow_move_constructible<vector>::value);
+  vertex a = ctx().new_vertex(), b = ctx().new_vertex(), c = ctx().new_vertex();
+  vector list{a, b};
+  std::vector deduced{a, b};  // deduced as std::vector<vertex>
+  static_assert(std::is_same<decltype(deduced), vector>::value);
+  EXPECT_EQ(list, deduced);
+  list.insert(list.begin() + 1, c);
+  EXPECT_EQ(list, (vector{a, c, b}));
+  EXPECT_NE(list, deduced);
+  EXPECT_TRUE(deduced < list);  // a = a, then b (label 2) < c (label 3)
+  list.erase(list.begin());
+  EXPECT_EQ(list, (vector{c, b}));
+  vector copy = list;
+  list = {a};
+  EXPECT_EQ(copy, (vector{c, b}));
+  std::swap(list, copy);
+  EXPECT_EQ(list, (vector{c, b}));
+  EXPECT_EQ(copy, (vector{a}));
+  vector moved = std::move(list);
+  EXPECT_TRUE(list.empty());
+  EXPECT_EQ(moved.size(), 2u);
+  moved.resize(5);
+  EXPECT_EQ(moved[4], vertex());
+  moved.clear();
+  moved.shrink_to_fit();
+  // a: a, copy, deduced; b: b, deduced; c: c.
+  EXPECT_EQ(ctx().refs(a.slot()), 3u);
+  EXPECT_EQ(ctx().refs(b.slot()), 2u);
+  EXPECT_EQ(ctx().refs(c.slot()), 1u);
 }
 
 TEST_F(HandleBlocks, OtherSizesAndOtherTraitsUseTheHeap) {

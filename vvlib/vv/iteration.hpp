@@ -27,8 +27,12 @@ class neighbour_range {
 
   VV_INLINE neighbour_range(context<Tr>* ctx, const typename context<Tr>::nb_type& nb)
       : ctx_(ctx), pause_(*ctx), size_(nb.size()) {
-    std::uint32_t* dst = size_ <= inline_size ? local_ : (spilled_.resize(size_), spilled_.data());
-    for (std::uint32_t i = 0; i < size_; ++i) dst[i] = detail::entry_id(nb[i]);
+    if (size_ <= inline_size) {
+      nb.copy_ids(local_, inline_size);
+    } else {
+      spilled_.resize(size_);
+      nb.copy_ids(spilled_.data(), size_);
+    }
   }
   neighbour_range(const neighbour_range&) = delete;
   neighbour_range& operator=(const neighbour_range&) = delete;

@@ -9,8 +9,8 @@
 // uses it (like `` `v ``): it holds the pair as slots without counting them,
 // so a step costs a neighbour search and no reference counts. Nothing in a
 // path expression creates a vertex, so the collector cannot run while the
-// walk's slots are in use; first(), second() and store() hand out counted
-// handles. Do not keep a walk beyond the handles it started from.
+// walk's slots are in use; first() and second() hand out counted handles,
+// and store() writes counted handles into the two variables. Do not keep a walk beyond the handles it started from.
 #pragma once
 
 #include "detail/inline.hpp"
@@ -94,13 +94,14 @@ class path_into_walk : public path_walk<Tr> {
   VV_INLINE path_into_walk& next() { return path_walk<Tr>::next(), *this; }
   VV_INLINE path_into_walk& prev() { return path_walk<Tr>::prev(), *this; }
   VV_INLINE path_into_walk& swap() noexcept { return path_walk<Tr>::swap(), *this; }
-  //! Writes the pair back and gives the second vertex.
-  VV_INLINE vertex<Tr> store() {
-    // Counted before either variable lets go of what it held.
-    vertex<Tr> a = this->first(), b = this->second();
-    a_ref_ = std::move(a);
-    b_ref_ = b;
-    return b;
+  //! Writes the pair back and gives the second vertex: the variable it
+  //! was written to, so a walk whose value is unused makes no handle.
+  VV_INLINE const vertex<Tr>& store() {
+    // The walk's slots are uncounted, and nothing here can run the
+    // collector, so each variable may let go of what it held first.
+    a_ref_.assign_slot(this->a_.ctx, this->a_.id);
+    b_ref_.assign_slot(this->b_.ctx, this->b_.id);
+    return b_ref_;
   }
 
  private:

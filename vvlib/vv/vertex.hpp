@@ -37,27 +37,27 @@ class vertex {
   // loop still reads it, and the new handle must hold a count of its own
   // (unless it is on a running block's stack too: hold).
   VV_INLINE vertex(vertex&& o) noexcept : ctx_(o.ctx_), id_(o.id_) {
-    if (!o.borrowed_) o.id_ = 0;
-    else if (id_) hold();
+    if (o.counted_) {
+      counted_ = true;
+      o.counted_ = false;
+      o.id_ = 0;
+    } else if (id_) {
+      hold();
+    }
   }
   VV_INLINE vertex& operator=(const vertex& o) noexcept {
-    context_type* const c = o.ctx_;
-    const std::uint32_t id = o.id_;
-    const bool counted = id && c->counts_at(this);
-    if (counted) c->retain(id);
-    drop();
-    ctx_ = c;
-    id_ = id;
-    borrowed_ = id && !counted;
+    assign_slot(o.ctx_, o.id_);
     return *this;
   }
   VV_INLINE vertex& operator=(vertex&& o) noexcept {
-    if (o.borrowed_) return *this = static_cast<const vertex&>(o);
+    if (!o.counted_) return *this = static_cast<const vertex&>(o);
     if (this != &o) {
       drop();
       ctx_ = o.ctx_;
       id_ = o.id_;
+      counted_ = true;
       o.id_ = 0;
+      o.counted_ = false;
     }
     return *this;
   }
@@ -110,7 +110,16 @@ class vertex {
     drop();
     ctx_ = c;
     id_ = id;
-    borrowed_ = true;
+  }
+  //! Makes this handle name slot id of c ({nullptr, 0}: null), counted
+  //! as a copy assigned to it would be.
+  VV_INLINE void assign_slot(context_type* c, std::uint32_t id) noexcept {
+    const bool counted = id && c->counts_at(this);
+    if (counted) c->retain(id);
+    drop();
+    ctx_ = c;
+    id_ = id;
+    counted_ = counted;
   }
   //! An uncounted handle to slot id, as a prvalue: the parameter it
   //! initialises is that handle itself, not a counted copy. A parallel
@@ -146,22 +155,28 @@ class vertex {
     if (id_) hold();
   }
   struct borrow_tag {};
-  vertex(context_type* c, std::uint32_t id, borrow_tag) noexcept : ctx_(c), id_(id), borrowed_(true) {}
+  vertex(context_type* c, std::uint32_t id, borrow_tag) noexcept : ctx_(c), id_(id) {}
   // Takes a count for id_, or, on the stack of a running block, none: the
   // collector waits for the block's end, when this handle is gone.
   VV_INLINE void hold() noexcept {
-    if (ctx_->counts_at(this)) ctx_->retain(id_);
-    else borrowed_ = true;
+    if (ctx_->counts_at(this)) {
+      ctx_->retain(id_);
+      counted_ = true;
+    }
   }
   VV_INLINE void drop() noexcept {
-    if (id_ && !borrowed_) ctx_->release(id_);
+    if (counted_) ctx_->release(id_);
     id_ = 0;
-    borrowed_ = false;
+    counted_ = false;
   }
 
   context_type* ctx_ = nullptr;
   std::uint32_t id_ = 0;
-  bool borrowed_ = false;  // no count to release: rebind_borrowed, or on a block's stack
+  // Whether this handle holds a count of id_ (so drop releases one). A
+  // null handle, a borrowed one (rebind_borrowed, borrowed) and one on a
+  // running block's stack hold none. One flag, so that dropping a handle
+  // costs one test.
+  bool counted_ = false;
 };
 
 //! `labelof v`
@@ -247,75 +262,11 @@ VV_INLINE old_vertex<Tr> old(const old_vertex<Tr>& v, where = where::here()) {
 
 }  // namespace vv
 
-//! Vectors of a translated program's handles (a face's corners, a cell's
-//! wall) take their short blocks from the context's recycled ones
-//! (detail/handle_blocks.hpp); everything else is operator new's.
-template <class Tr>
-class std::allocator<vv::vertex<Tr>> {
- public:
-  using value_type = vv::vertex<Tr>;
-  using size_type = std::size_t;
-  using difference_type = std::ptrdiff_t;
-  using propagate_on_container_move_assignment = std::true_type;
-  using is_always_equal = std::true_type;
-  template <class U>
-  struct rebind {
-    using other = std::allocator<U>;
-  };
-
-  allocator() noexcept = default;
-  allocator(const allocator&) noexcept = default;
-  allocator& operator=(const allocator&) noexcept = default;
-  template <class U>
-  allocator(const std::allocator<U>&) noexcept {}
-
-  VV_INLINE value_type* allocate(std::size_t n) {
-    if constexpr (recycles()) {
-      const int c = vv::detail::handle_blocks::class_of(n);
-      if (c >= 0)
-        if (vv::detail::handle_blocks* blocks = Tr::context().handle_blocks())
-          if (void* p = blocks->take(c)) return static_cast<value_type*>(p);
-    }
-    if (n > std::size_t(-1) / sizeof(value_type)) throw std::bad_array_new_length();
-    return static_cast<value_type*>(::operator new(n * sizeof(value_type)));
-  }
-  VV_INLINE void deallocate(value_type* p, std::size_t n) noexcept {
-    if constexpr (recycles()) {
-      const int c = vv::detail::handle_blocks::class_of(n);
-      if (c >= 0)
-        if (vv::detail::handle_blocks* blocks = Tr::context().handle_blocks())
-          if (blocks->keep(p, c)) return;
-    }
-    ::operator delete(p);
-  }
-
-  // libstdc++'s allocator_traits<std::allocator<T>> calls these members,
-  // which std::allocator has in C++17.
-  template <class U, class... A>
-  void construct(U* p, A&&... args) {
-    ::new (static_cast<void*>(p)) U(std::forward<A>(args)...);
-  }
-  template <class U>
-  void destroy(U* p) noexcept {
-    p->~U();
-  }
-  std::size_t max_size() const noexcept { return std::size_t(-1) / sizeof(value_type); }
-
-  friend bool operator==(const allocator&, const allocator&) noexcept { return true; }
-  friend bool operator!=(const allocator&, const allocator&) noexcept { return false; }
-
- private:
-  // A function, not a constant: the class is instantiated wherever a
-  // vector of handles is declared, in a property struct too, where Tr is
-  // not yet complete and would not yet name its context.
-  static constexpr bool recycles() noexcept {
-    return VV_RECYCLE_HANDLE_BLOCKS && vv::detail::has_default_context<Tr>::value;
-  }
-};
-
 template <class Tr>
 struct std::hash<vv::vertex<Tr>> {
   std::size_t operator()(const vv::vertex<Tr>& v) const noexcept {
     return std::hash<unsigned>()(v.label());
   }
 };
+
+#include "handle_vector.hpp"

@@ -55,19 +55,9 @@ VV_INLINE vertex<Tr> edit_target(const old_vertex<Tr>& v, const char* op, const 
   return v.current();
 }
 
-//! Slot id of a neighbourhood entry, whatever its record type.
-inline std::uint32_t entry_id(std::uint32_t e) noexcept { return e; }
-template <class E>
-std::uint32_t entry_id(const record_entry<E>& e) noexcept {
-  return e.id;
-}
-
 template <class NB>
 VV_INLINE std::int32_t find(const NB& nb, std::uint32_t id) noexcept {
-  const auto* d = nb.data();
-  for (std::uint32_t i = 0, n = nb.size(); i < n; ++i)
-    if (entry_id(d[i]) == id) return static_cast<std::int32_t>(i);
-  return -1;
+  return nb.index_of(id);
 }
 
 //! The slot a vertex operand occupies in v's context, or 0 when it is null

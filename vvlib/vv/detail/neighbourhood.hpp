@@ -24,6 +24,10 @@
 
 #include "inline.hpp"
 
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
+
 #ifndef VV_MOVE_RECORDS_ON_EDIT
 #if defined(__SANITIZE_ADDRESS__)
 #define VV_MOVE_RECORDS_ON_EDIT 1
@@ -68,6 +72,13 @@ struct entry_traits<E, true> {
   static const E& rec(type, const E& shared) noexcept { return shared; }
   static type make(std::uint32_t id) noexcept { return id; }
 };
+
+//! Slot id of a neighbourhood entry, whatever its record type.
+inline std::uint32_t entry_id(std::uint32_t e) noexcept { return e; }
+template <class E>
+std::uint32_t entry_id(const record_entry<E>& e) noexcept {
+  return e.id;
+}
 
 template <class Entry, unsigned K>
 class neighbourhood {
@@ -118,6 +129,33 @@ class neighbourhood {
   Entry& operator[](std::uint32_t i) noexcept { return data()[i]; }
   const Entry& operator[](std::uint32_t i) const noexcept { return data()[i]; }
 
+  //! The position of the entry naming slot id, or -1.
+  VV_INLINE std::int32_t index_of(std::uint32_t id) const noexcept {
+#if defined(__SSE2__)
+    if constexpr (std::is_same<Entry, std::uint32_t>::value && K >= 4 && K < 32 && !moves_on_edit) {
+      if (is_inline()) return inline_index_of(id);
+    }
+#endif
+    const Entry* d = data();
+    for (std::uint32_t i = 0; i < size_; ++i)
+      if (entry_id(d[i]) == id) return static_cast<std::int32_t>(i);
+    return -1;
+  }
+
+  //! Copies the entries' slot ids to dst, which has room for
+  //! max(size(), room) ids. A short inline list is copied whole, unused
+  //! entries too: one fixed-size copy instead of a loop.
+  VV_INLINE void copy_ids(std::uint32_t* dst, std::uint32_t room) const noexcept {
+    if constexpr (std::is_same<Entry, std::uint32_t>::value && !moves_on_edit) {
+      if (is_inline() && K <= room) {
+        std::memcpy(dst, storage_, K * sizeof(std::uint32_t));
+        return;
+      }
+    }
+    const Entry* d = data();
+    for (std::uint32_t i = 0; i < size_; ++i) dst[i] = entry_id(d[i]);
+  }
+
   std::int32_t flag() const noexcept { return flag_; }
   void set_flag(std::int32_t f) noexcept { flag_ = f; }
 
@@ -145,7 +183,11 @@ class neighbourhood {
       return;
     }
     Entry* d = data();
-    if (pos == size_) {
+    if constexpr (std::is_trivially_copyable<Entry>::value) {
+      // A few entries at most: a short loop, not a call to memmove.
+      for (std::uint32_t i = size_; i > pos; --i) d[i] = d[i - 1];
+      d[pos] = copy;
+    } else if (pos == size_) {
       ::new (static_cast<void*>(d + size_)) Entry(std::move(copy));
     } else {
       ::new (static_cast<void*>(d + size_)) Entry(std::move(d[size_ - 1]));
@@ -216,6 +258,24 @@ class neighbourhood {
       alignof(Entry) > alignof(heap_rep) ? alignof(Entry) : alignof(heap_rep);
 
   bool is_inline() const noexcept { return !moves_on_edit && size_ <= K; }
+
+#if defined(__SSE2__)
+  // Compares id with the whole inline list, four entries at a time (the
+  // last four overlap the ones before when K is no multiple of four), and
+  // keeps the matches below size_: no branch on where the match is, which a
+  // scan mispredicts about once per search.
+  VV_INLINE std::int32_t inline_index_of(std::uint32_t id) const noexcept {
+    const __m128i key = _mm_set1_epi32(static_cast<int>(id));
+    unsigned matches = 0;
+    for (unsigned first = 0; first < K; first += 4) {
+      const unsigned at = first + 4 <= K ? first : K - 4;
+      const __m128i four = _mm_loadu_si128(reinterpret_cast<const __m128i*>(storage_ + at * sizeof(Entry)));
+      matches |= static_cast<unsigned>(_mm_movemask_ps(_mm_castsi128_ps(_mm_cmpeq_epi32(four, key)))) << at;
+    }
+    matches &= (1u << size_) - 1u;
+    return matches ? static_cast<std::int32_t>(__builtin_ctz(matches)) : -1;
+  }
+#endif
   Entry* inline_data() noexcept { return std::launder(reinterpret_cast<Entry*>(storage_)); }
   const Entry* inline_data() const noexcept {
     return std::launder(reinterpret_cast<const Entry*>(storage_));
