@@ -10,6 +10,7 @@
 #include <string>
 #include <type_traits>
 #include <utility>
+#include <vector>
 
 namespace {
 
@@ -275,4 +276,38 @@ TEST(UtilPoint, TwoCoordinatesMakeAPointOfTheXyPlane) {
   expect_point(n, -4, 3, 0);
   util::Point<float> f(1.5f, -2.0f);
   expect_point(Pt(f), 1.5, -2, 0);
+}
+
+// A vector of points (util/first_room_vector.hpp) is a standard vector
+// whose first push makes room for four.
+TEST(UtilPoint, AVectorOfPointsMakesRoomForFourAtItsFirstPush) {
+  using points = std::vector<Pt>;
+  static_assert(std::is_same<std::allocator_traits<points::allocator_type>::rebind_alloc<Pt>,
+                             points::allocator_type>::value);
+  points corners;
+  EXPECT_EQ(corners.capacity(), 0u);
+  corners.push_back(Pt(1, 0, 0));
+  EXPECT_EQ(corners.capacity(), 4u);
+  const Pt* block = corners.data();
+  corners.emplace_back(0, 1, 0);
+  corners.push_back(Pt(0, 0, 1));
+  corners.emplace_back();
+  EXPECT_EQ(corners.data(), block) << "four points fit without moving";
+  corners.push_back(Pt(2, 2, 2));
+  EXPECT_EQ(corners.size(), 5u);
+  expect_point(corners[1], 0, 1, 0);
+  expect_point(corners[3], 0, 0, 0);
+  expect_point(corners.back(), 2, 2, 2);
+
+  points same{Pt(1, 0, 0), Pt(0, 1, 0), Pt(0, 0, 1), Pt(), Pt(2, 2, 2)};
+  EXPECT_EQ(corners, same);
+  std::vector deduced{Pt(1, 0, 0)};
+  static_assert(std::is_same<decltype(deduced), points>::value);
+  deduced = {Pt(3, 3, 3)};
+  points moved = std::move(deduced);
+  EXPECT_TRUE(deduced.empty());
+  expect_point(moved.front(), 3, 3, 3);
+  std::vector<Ptf> floats;
+  floats.push_back(Ptf(1, 2, 3));
+  EXPECT_EQ(floats.capacity(), 4u);
 }

@@ -11,6 +11,8 @@
 
 #include <glm/glm.hpp>
 
+#include "first_room_vector.hpp"
+
 namespace util {
 
 namespace detail {
@@ -146,6 +148,23 @@ class Point {
 };
 
 }  // namespace util
+
+//! A vector of points (a face's corner positions, a contour's) makes room
+//! for four at its first push (util/first_room_vector.hpp).
+template <class T>
+class std::vector<util::Point<T>, std::allocator<util::Point<T>>>
+    : public util::detail::first_room_vector<util::Point<T>, util::detail::own_allocator<util::Point<T>>, 4> {
+  using base = util::detail::first_room_vector<util::Point<T>, util::detail::own_allocator<util::Point<T>>, 4>;
+
+ public:
+  using base::base;
+  vector() noexcept = default;
+  vector(const vector&) = default;
+  vector(vector&&) noexcept = default;
+  vector& operator=(const vector&) = default;
+  vector& operator=(vector&&) noexcept = default;
+  using base::operator=;
+};
 
 // vv 1.1 programs include only <util/point.hpp> yet call the geometry
 // helpers; the include sits last so Point is complete when they are seen.

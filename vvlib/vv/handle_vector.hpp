@@ -6,7 +6,7 @@
 // instructions. vvlib's vector is the standard one with two differences:
 //
 // * the first push_back or emplace_back makes room for four handles at
-//   once (a quad's corners, a triangle's);
+//   once (a quad's corners, a triangle's: util/first_room_vector.hpp);
 // * blocks of 1, 2, 4 and 8 handles come from the context's recycled ones
 //   (detail/handle_blocks.hpp) for a translated program's traits, which
 //   name the model's context; other traits, parallel loops (whose threads
@@ -28,6 +28,7 @@
 #include <utility>
 #include <vector>
 
+#include "../util/first_room_vector.hpp"
 #include "detail/handle_blocks.hpp"
 #include "traits.hpp"
 
@@ -92,64 +93,20 @@ class handle_allocator {
   }
 };
 
-template <class Tr>
-using handle_vector_base = std::vector<vertex<Tr>, handle_allocator<Tr>>;
-
 }  // namespace vv::detail
 
+//! vvlib's std::vector of handles (see the top of this file).
 template <class Tr>
-class std::vector<vv::vertex<Tr>, std::allocator<vv::vertex<Tr>>> : public vv::detail::handle_vector_base<Tr> {
-  using base = vv::detail::handle_vector_base<Tr>;
+class std::vector<vv::vertex<Tr>, std::allocator<vv::vertex<Tr>>>
+    : public util::detail::first_room_vector<vv::vertex<Tr>, vv::detail::handle_allocator<Tr>, 4> {
+  using base = util::detail::first_room_vector<vv::vertex<Tr>, vv::detail::handle_allocator<Tr>, 4>;
 
  public:
-  //! Room made by the first push_back or emplace_back.
-  static constexpr std::size_t first_capacity = 4;
-
-  using typename base::const_reference;
-  using typename base::reference;
-  using typename base::size_type;
-  using typename base::value_type;
-
   using base::base;
   vector() noexcept = default;
   vector(const vector&) = default;
   vector(vector&&) noexcept = default;
-  explicit vector(const std::allocator<value_type>&) noexcept {}
   vector& operator=(const vector&) = default;
   vector& operator=(vector&&) noexcept = default;
-  vector& operator=(std::initializer_list<value_type> list) {
-    base::operator=(list);
-    return *this;
-  }
-
-  VV_INLINE void push_back(const value_type& v) {
-    make_room();
-    base::push_back(v);
-  }
-  VV_INLINE void push_back(value_type&& v) {
-    make_room();
-    base::push_back(std::move(v));
-  }
-  template <class... A>
-  VV_INLINE reference emplace_back(A&&... args) {
-    make_room();
-    return base::emplace_back(std::forward<A>(args)...);
-  }
-
- private:
-  // Only a vector without storage is given room, so the element pushed
-  // cannot be one of its own. With libstdc++ the block is installed
-  // directly (its vector keeps its three pointers in _M_impl, which a
-  // derived class may set): reserve() would check, relocate and free for
-  // nothing, half of what the first push costs.
-  VV_INLINE void make_room() {
-    if (this->capacity() != 0) return;
-#if defined(__GLIBCXX__)
-    auto* block = this->_M_allocate(first_capacity);
-    this->_M_impl._M_start = this->_M_impl._M_finish = block;
-    this->_M_impl._M_end_of_storage = block + first_capacity;
-#else
-    this->reserve(first_capacity);
-#endif
-  }
+  using base::operator=;
 };
