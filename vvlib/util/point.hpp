@@ -157,12 +157,8 @@ class std::vector<util::Point<T>, std::allocator<util::Point<T>>>
   using base = util::detail::first_room_vector<util::Point<T>, util::detail::own_allocator<util::Point<T>>, 4>;
 
  public:
+  // Its own default, copy and move members are the implicit ones.
   using base::base;
-  vector() noexcept = default;
-  vector(const vector&) = default;
-  vector(vector&&) noexcept = default;
-  vector& operator=(const vector&) = default;
-  vector& operator=(vector&&) noexcept = default;
   using base::operator=;
 };
 

@@ -102,11 +102,7 @@ class std::vector<vv::vertex<Tr>, std::allocator<vv::vertex<Tr>>>
   using base = util::detail::first_room_vector<vv::vertex<Tr>, vv::detail::handle_allocator<Tr>, 4>;
 
  public:
+  // Its own default, copy and move members are the implicit ones.
   using base::base;
-  vector() noexcept = default;
-  vector(const vector&) = default;
-  vector(vector&&) noexcept = default;
-  vector& operator=(const vector&) = default;
-  vector& operator=(vector&&) noexcept = default;
   using base::operator=;
 };
