@@ -3,8 +3,8 @@
 //
 // A model collects a face's corners, or their positions, in a vector that
 // lives for one call: a standard vector grows 1, 2, 4, moving what it holds
-// into a new block each time, which cost Catmull-Clark and Doo-Sabin steps
-// a fifth of their instructions. vvlib makes std::vector of its handles
+// into a new block each time, which cost a Catmull-Clark step a tenth of
+// its instructions and a Doo-Sabin step a fifth. vvlib makes std::vector of its handles
 // (vv/handle_vector.hpp) and of util::Point (util/point.hpp) this class:
 // the standard vector over an allocator of their own, with room for four
 // from the first push. Everything else is std::vector's; a program sees no
@@ -43,10 +43,7 @@ class first_room_vector : public std::vector<T, Alloc> {
   //! Room made by the first push_back or emplace_back.
   static constexpr std::size_t first_capacity = FirstRoom;
 
-  using typename base::const_reference;
   using typename base::reference;
-  using typename base::size_type;
-  using typename base::value_type;
 
   using base::base;
   first_room_vector() noexcept = default;

@@ -21,12 +21,9 @@
 #include "detail/inline.hpp"
 
 #include <cstddef>
-#include <initializer_list>
 #include <memory>
 #include <new>
 #include <type_traits>
-#include <utility>
-#include <vector>
 
 #include "../util/first_room_vector.hpp"
 #include "detail/handle_blocks.hpp"
