@@ -69,9 +69,16 @@ std::string tidy_path(const std::string& file) {
   return file;
 }
 
+// What addr2line says of one address: the model's .vvp frames there
+// (innermost first) and the function the address is in.
+struct looked_up {
+  std::vector<source_frame> frames;
+  std::string function;  //!< "??" where no function is
+};
+
 // addr2line -a prints each address, then function / file:line pairs (more
 // than one when calls were inlined, innermost first).
-std::vector<source_frame> lookup(const std::string& file, const std::vector<std::uintptr_t>& addresses) {
+std::vector<looked_up> lookup(const std::string& file, const std::vector<std::uintptr_t>& addresses) {
   std::vector<std::string> argv = {"addr2line", "-a", "-f", "-C", "-i", "-e", file};
   for (std::uintptr_t a : addresses) {
     char hex[32];
@@ -79,15 +86,20 @@ std::vector<source_frame> lookup(const std::string& file, const std::vector<std:
     argv.push_back(hex);
   }
   process_result r = run_process(argv);
-  std::vector<source_frame> out;
+  std::vector<looked_up> out;
   if (r.status != 0) return out;
   std::istringstream lines(r.output);
   std::string l, function;
   bool want_function = true;
   while (std::getline(lines, l)) {
-    if (l.rfind("0x", 0) == 0 && want_function) continue;  // the address line
+    if (l.rfind("0x", 0) == 0 && want_function) {  // the address line: the next address's answer
+      out.emplace_back();
+      continue;
+    }
+    if (out.empty()) continue;
     if (want_function) {
       function = l;
+      out.back().function = l;
       want_function = false;
       continue;
     }
@@ -101,10 +113,44 @@ std::vector<source_frame> lookup(const std::string& file, const std::vector<std:
     if (f.line > 0 && is_model_source(f.file)) {
       if (f.file.rfind(model_folder_marker, 0) == 0) f.file = in_model_folder(f.file, model_folder_of_build(file));
       f.file = tidy_path(f.file);
-      out.push_back(f);
+      out.back().frames.push_back(f);
     }
   }
   return out;
+}
+
+// The plugin file an address is in, and the address in that file; an
+// empty file when the address is not in a model.
+std::pair<std::string, std::uintptr_t> in_module(std::uintptr_t a, const std::vector<mapping>& maps,
+                                                 const std::map<std::string, std::string>& modules) {
+  for (const mapping& m : maps) {
+    if (a < m.start || a >= m.end) continue;
+    auto module = modules.find(m.path);
+    if (module == modules.end()) break;  // not a model: vvlib inlined into it is, the rest is not
+    return {module->second, a - m.start + m.offset};
+  }
+  return {"", 0};
+}
+
+// How far back an interrupted instruction's line is looked for.
+constexpr std::uintptr_t line_search_bytes = 256;
+
+// The frames of an interrupted instruction. The compiler gives some
+// instructions no line (line 0: a vv::where stored for error messages, a
+// spill): a sample that lands on one takes the line of the code just
+// before it. The search ends where no function is (the padding before a
+// function; a function's first instruction always has its line).
+std::vector<source_frame> interrupted_frames(std::uintptr_t pc, const std::vector<mapping>& maps,
+                                             const std::map<std::string, std::string>& modules) {
+  auto [file, at] = in_module(pc, maps, modules);
+  if (file.empty()) return {};
+  std::vector<std::uintptr_t> addresses;
+  for (std::uintptr_t back = 0; back <= line_search_bytes && back <= at; ++back) addresses.push_back(at - back);
+  for (const looked_up& l : lookup(file, addresses)) {
+    if (!l.frames.empty()) return l.frames;
+    if (l.function.empty() || l.function == "??") break;
+  }
+  return {};
 }
 
 }  // namespace
@@ -115,14 +161,9 @@ std::vector<source_frame> model_frames(const std::vector<std::uintptr_t>& code_a
   std::vector<mapping> maps = parse_maps(maps_lines);
   std::vector<source_frame> out;
   for (std::uintptr_t a : code_addresses) {
-    for (const mapping& m : maps) {
-      if (a < m.start || a >= m.end) continue;
-      auto module = modules.find(m.path);
-      if (module == modules.end()) break;  // not a model: vvlib inlined into it is, the rest is not
-      std::vector<source_frame> found = lookup(module->second, {a - m.start + m.offset});
-      out.insert(out.end(), found.begin(), found.end());
-      break;
-    }
+    auto [file, at] = in_module(a, maps, modules);
+    if (file.empty()) continue;
+    for (const looked_up& l : lookup(file, {at})) out.insert(out.end(), l.frames.begin(), l.frames.end());
   }
   return out;
 }
@@ -132,11 +173,17 @@ std::vector<source_frame> model_stack(const stack_sample& sample, const std::map
   std::size_t first = 0;
   for (std::size_t i = 0; i < sample.frames.size(); ++i)
     if (sample.frames[i] == sample.pc) first = i;
+  std::vector<source_frame> out;
+  if (first < sample.frames.size() && sample.frames[first] == sample.pc) {
+    out = interrupted_frames(sample.pc, parse_maps(sample.maps), modules);
+    ++first;
+  }
   std::vector<std::uintptr_t> calls;
-  for (std::size_t i = first; i < sample.frames.size(); ++i)
-    // A return address points after its call: look up the call itself.
-    calls.push_back(sample.frames[i] - (i == first && sample.frames[i] == sample.pc ? 0 : 1));
-  return model_frames(calls, sample.maps, modules);
+  // A return address points after its call: look up the call itself.
+  for (std::size_t i = first; i < sample.frames.size(); ++i) calls.push_back(sample.frames[i] - 1);
+  std::vector<source_frame> callers = model_frames(calls, sample.maps, modules);
+  out.insert(out.end(), callers.begin(), callers.end());
+  return out;
 }
 
 std::vector<source_frame> model_stack(const child_end& end) { return model_stack(end.crash, end.modules); }
