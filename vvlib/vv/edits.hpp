@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "detail/nb_access.hpp"
+#include "detail/repeated_ids.hpp"
 
 namespace vv {
 
@@ -69,12 +70,43 @@ template <class Tr>
   throw error(w, "make", name_of(vertex<Tr>::from_slot(v.ctx(), id)) + " is listed twice for " + name_of(v));
 }
 
+// The first id of a list of n that an earlier entry names too (off the
+// hot path: the list is refused).
+[[gnu::cold]] inline std::uint32_t first_repeated(const std::uint32_t* ids, std::size_t n) noexcept {
+  for (std::size_t i = 1; i < n; ++i)
+    for (std::size_t j = 0; j < i; ++j)
+      if (ids[i] == ids[j]) return ids[i];
+  return 0;
+}
+
+// A list of up to eight vertices, without half-edge records (the common
+// `make`): checked without a branch per pair, and copied into the inline
+// storage whole.
+template <class Tr, class It>
+VV_INLINE void make_short_neighbourhood(const vertex<Tr>& v, It first, std::size_t n, const where& w) {
+  alignas(16) std::uint32_t ids[repeat_check_lanes] = {};
+  context<Tr>* const ctx = v.ctx();
+  const std::uint32_t self = v.slot();
+  for (std::size_t k = 0; k < n; ++k, ++first) {
+    const vertex<Tr>& x = static_cast<const vertex<Tr>&>(*first);
+    // Null, of another context, or v itself: one test on the common path.
+    if (__builtin_expect(!x || x.ctx() != ctx || x.slot() == self, 0)) refuse_in_make(v, x, w);
+    ids[k] = x.slot();
+  }
+  if (__builtin_expect(repeats_among(ids, n), 0)) listed_twice(v, first_repeated(ids, n), w);
+  auto& nb = ctx->nb(self);
+  nb.assign(ids, static_cast<std::uint32_t>(n), repeat_check_lanes);
+  nb.set_flag(nb.no_flag);
+}
+
 template <class Tr, class It>
 void make_neighbourhood(const vertex<Tr>& v, It first, It last, const where& w) {
   using entry_traits = typename context<Tr>::entry_traits;
   using entry = typename context<Tr>::entry;
   constexpr std::size_t small = 16;  // lists up to this long need no allocation
   std::size_t n = static_cast<std::size_t>(std::distance(first, last));
+  if constexpr (std::is_same<entry, std::uint32_t>::value)
+    if (n <= repeat_check_lanes) return make_short_neighbourhood(v, first, n, w);
   entry local[small];
   std::vector<entry> spilled;
   entry* entries = local;

@@ -174,6 +174,18 @@ class neighbourhood {
     }
     assign_elsewhere(src, n);
   }
+  //! The same, from a source with `room` readable entries (room >= n): an
+  //! inline list of slots is copied whole, K entries at once.
+  VV_INLINE void assign(const Entry* src, std::uint32_t n, std::uint32_t room) {
+    if constexpr (std::is_same<Entry, std::uint32_t>::value && !moves_on_edit) {
+      if (n <= K && size_ <= K && K <= room) {
+        std::memcpy(storage_, src, K * sizeof(std::uint32_t));
+        size_ = n;
+        return;
+      }
+    }
+    assign(src, n);
+  }
 
   //! Insert e before position pos (pos == size() appends).
   void insert(std::uint32_t pos, const Entry& e) {
