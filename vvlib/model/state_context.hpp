@@ -106,8 +106,8 @@ struct context_state {
     const std::uint64_t chunks = r.count("the chunks");
     if (chunks != ((next_slot - 1) >> C::chunk_bits) + 1) throw state_error("a chunk count that does not fit the slots");
     while (c.chunks_.size() < chunks) c.add_chunk();
-    for (auto& chunk : c.chunks_)
-      if (r.u8("a chunk's old state")) chunk->old.reset(new typename C::old_block());
+    for (std::uint64_t i = 0; i < chunks; ++i)
+      if (r.u8("a chunk's old state")) c.old_block_of(static_cast<std::uint32_t>(i << C::chunk_bits));
     c.next_slot_ = next_slot;
     c.next_label_ = next_label;
     c.free_slots_ = std::move(free_slots);

@@ -56,10 +56,12 @@
 #include <string>
 #include <vector>
 
+#include "detail/block_arena.hpp"
 #include "detail/handle_blocks.hpp"
 #include "detail/inline.hpp"
 #include "detail/neighbourhood.hpp"
 #include "detail/parallel_scope.hpp"
+#include "detail/run_allocator.hpp"
 #include "detail/thread_counts.hpp"
 #include "error.hpp"
 #include "traits.hpp"
@@ -340,24 +342,41 @@ class context {
     nb_type nb[chunk_size];
     vertex_props props[chunk_size];
   };
+  // Blocks live in blocks_ (detail/block_arena.hpp): owning one destroys it,
+  // the arena frees the memory.
+  struct destroy_block {
+    template <class Block>
+    void operator()(Block* b) const noexcept {
+      b->~Block();
+    }
+  };
+  template <class Block>
+  using block_ptr = std::unique_ptr<Block, destroy_block>;
+  template <class Block>
+  block_ptr<Block> make_block() {
+    // Value-initialisation zeroes the properties.
+    return block_ptr<Block>(new (blocks_.take(sizeof(Block), alignof(Block))) Block());
+  }
+
   struct chunk {
     nb_type nb[chunk_size];
     vertex_props props[chunk_size];
-    std::unique_ptr<old_block> old;  // null until a vertex of the chunk is synchronised
+    block_ptr<old_block> old;  // null until a vertex of the chunk is synchronised
   };
 
   chunk& at(std::uint32_t id) noexcept { return *chunks_[id >> chunk_bits]; }
   const chunk& at(std::uint32_t id) const noexcept { return *chunks_[id >> chunk_bits]; }
 
   void add_chunk() {
-    // Value-initialisation zeroes the properties.
-    chunks_.push_back(std::unique_ptr<chunk>(new chunk()));
+    // Room first, so that the block cannot be lost.
+    if (chunks_.size() == chunks_.capacity()) chunks_.reserve(2 * chunks_.size() + 8);
+    chunks_.push_back(make_block<chunk>());
     refs_.resize(chunks_.size() * chunk_size, 0u);
     labels_.resize(chunks_.size() * chunk_size, 0u);
   }
   old_block& old_block_of(std::uint32_t id) {
     chunk& c = at(id);
-    if (!c.old) c.old.reset(new old_block());
+    if (!c.old) c.old = make_block<old_block>();
     return *c.old;
   }
 
@@ -381,9 +400,10 @@ class context {
   // Counts and labels are one array each over all slots, not per chunk:
   // every handle copy touches a count, every `p < q` two labels, and no
   // reference to either outlives a call, so they may move when they grow.
-  std::vector<std::uint32_t> refs_;
-  std::vector<std::uint32_t> labels_;  // 0: the slot is free
-  std::vector<std::unique_ptr<chunk>> chunks_;
+  detail::slot_list refs_;
+  detail::slot_list labels_;  // 0: the slot is free
+  detail::block_arena blocks_;  // before the blocks, which it outlives
+  std::vector<block_ptr<chunk>> chunks_;
   std::vector<std::uint32_t> free_slots_;
   std::uint32_t next_slot_ = 1;
   std::uint32_t next_label_ = 1;
@@ -503,7 +523,7 @@ template <class Tr>
 std::size_t context<Tr>::storage_bytes() const noexcept {
   std::size_t bytes = chunks_.size() * sizeof(chunk) +
                       (refs_.capacity() + labels_.capacity()) * sizeof(std::uint32_t) +
-                      chunks_.capacity() * sizeof(std::unique_ptr<chunk>) +
+                      chunks_.capacity() * sizeof(block_ptr<chunk>) +
                       free_slots_.capacity() * sizeof(std::uint32_t);
   for (const auto& c : chunks_) {
     if (c->old) bytes += sizeof(old_block);

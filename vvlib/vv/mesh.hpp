@@ -208,7 +208,7 @@ class mesh : public Tr::mesh_props {
   typename iterator::sentinel end() const noexcept { return {}; }
 
   //! Slots of the members in order (holes are 0), for library algorithms.
-  const std::vector<std::uint32_t>& slots() const noexcept { return order_; }
+  const detail::slot_list& slots() const noexcept { return order_; }
 
  private:
   void adopt_context(const vertex_type& v, const where& w) {
@@ -278,7 +278,7 @@ class mesh : public Tr::mesh_props {
   }
 
   context_type* ctx_ = nullptr;
-  std::vector<std::uint32_t> order_;
+  detail::slot_list order_;
   detail::member_index index_;
   std::size_t count_ = 0;
   std::size_t holes_ = 0;

@@ -22,12 +22,13 @@
 #include <vector>
 
 #include "inline.hpp"
+#include "run_allocator.hpp"
 
 namespace vv::detail {
 
 class member_index {
  public:
-  using order_list = std::vector<std::uint32_t>;  // slots, 0 for holes
+  using order_list = slot_list;  // slots, 0 for holes
 
   //! Position of slot id in order, or -1.
   std::ptrdiff_t find(std::uint32_t id, const order_list& order) const noexcept {
@@ -185,7 +186,7 @@ class member_index {
     table_[hole] = 0;
   }
 
-  std::vector<std::uint32_t> table_;
+  slot_list table_;
   bool dense_ = false;
   unsigned bits_ = 0;
   std::uint32_t base_ = 0;       // dense: the slot of table_[0]

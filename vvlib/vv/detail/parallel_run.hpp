@@ -27,6 +27,7 @@
 #endif
 
 #include "../vertex.hpp"
+#include "run_allocator.hpp"
 
 namespace vv::detail {
 
@@ -164,7 +165,7 @@ void check_strict_iteration(context<Tr>& ctx, const parallel_loop& loop, std::ve
 //! runs in order under that loop's rules; in strict mode in order, each
 //! iteration checked.
 template <class Tr, class Fn>
-void for_each_member(context<Tr>& ctx, const std::vector<std::uint32_t>& slots, unsigned team, const where& w,
+void for_each_member(context<Tr>& ctx, const slot_list& slots, unsigned team, const where& w,
                      Fn&& fn) {
   const std::size_t n = slots.size();
   if (ctx.parallel_loop()) {
@@ -202,7 +203,7 @@ void for_each_member(context<Tr>& ctx, const std::vector<std::uint32_t>& slots, 
 //! synchronise: the old state of every member made a copy of its current
 //! one, on the context's threads when the mesh is large.
 template <class Tr>
-void synchronise_members(context<Tr>& ctx, const std::vector<std::uint32_t>& slots) {
+void synchronise_members(context<Tr>& ctx, const slot_list& slots) {
   auto copy = [&](std::uint32_t id) {
     ctx.writable_old_nb(id) = ctx.nb(id);
     ctx.writable_old_props(id) = ctx.props(id);
