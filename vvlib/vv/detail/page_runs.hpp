@@ -1,13 +1,11 @@
 // Runs of memory on 2 MiB boundaries, marked for transparent huge pages.
 //
-// A subdivision step that makes 600,000 vertices writes some 90 MB of new
+// A subdivision step that makes 600,000 vertices writes some 60 MB of new
 // storage (blocks of vertices, counts, labels, member lists). In 4 KiB
 // pages that is one page fault per 4 KiB, a third of the step's time on a
 // virtual machine, and the reads that follow miss the TLB. Mapped in runs
-// of 2 MiB marked MADV_HUGEPAGE, where transparent huge pages are on
-// ("madvise" or "always", as Debian ships them) each run is one page and
-// one fault; where they are off the advice is ignored and the runs are
-// ordinary pages.
+// of 2 MiB marked MADV_HUGEPAGE, where the kernel offers transparent huge
+// pages ("madvise" or "always"), each run is one page and one fault.
 //
 // Small storage stays on the heap, so a small model holds no 2 MiB page;
 // so does all of it where the kernel offers no huge pages, and under
