@@ -368,11 +368,12 @@ class context {
   const chunk& at(std::uint32_t id) const noexcept { return *chunks_[id >> chunk_bits]; }
 
   void add_chunk() {
-    // Room first, so that the block cannot be lost.
+    // Everything that may throw before the chunk counts: the arrays by
+    // slot may be longer than the chunks, never shorter.
+    refs_.resize((chunks_.size() + 1) * chunk_size, 0u);
+    labels_.resize((chunks_.size() + 1) * chunk_size, 0u);
     if (chunks_.size() == chunks_.capacity()) chunks_.reserve(2 * chunks_.size() + 8);
     chunks_.push_back(make_block<chunk>());
-    refs_.resize(chunks_.size() * chunk_size, 0u);
-    labels_.resize(chunks_.size() * chunk_size, 0u);
   }
   old_block& old_block_of(std::uint32_t id) {
     chunk& c = at(id);

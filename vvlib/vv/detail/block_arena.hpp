@@ -2,7 +2,9 @@
 // state, which live as long as the context does. The first MiB of blocks
 // comes from the heap, one block at a time; after it, blocks are carved
 // one after another from runs (page_runs.hpp), a few dozen to a run.
-// Where runs are not used, every block comes from the heap.
+// Where runs are not used, every block comes from the heap. A block of
+// more than half a run (a thousand vertices of over a KiB of properties
+// each) leaves the rest of its run unused.
 #pragma once
 
 #include <cstddef>

@@ -37,7 +37,8 @@
 
 namespace vv::detail {
 
-//! A run's alignment, and the size of a huge page on x86-64 and AArch64.
+//! A run's alignment, and the size of a huge page on x86-64 (and on
+//! AArch64 with 4 KiB pages).
 inline constexpr std::size_t run_bytes = std::size_t{2} << 20;
 
 //! True where the kernel backs memory marked MADV_HUGEPAGE with huge
@@ -69,6 +70,7 @@ constexpr std::size_t whole_runs(std::size_t bytes) noexcept {
 //! Throws std::bad_alloc.
 inline void* map_run(std::size_t size) {
 #if defined(__linux__)
+  if (size > ~std::size_t{0} - 2 * run_bytes) throw std::bad_alloc();
   // Map a run more than asked and give back what lies outside the boundary.
   void* raw = ::mmap(nullptr, size + run_bytes, PROT_READ | PROT_WRITE, MAP_PRIVATE | MAP_ANONYMOUS, -1, 0);
   if (raw == MAP_FAILED) throw std::bad_alloc();

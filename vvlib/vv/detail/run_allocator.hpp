@@ -1,8 +1,8 @@
 // An allocator for the large arrays of vertex storage (counts and labels by
 // slot, a mesh's member list and index): arrays of a MiB or more are
 // mapped in whole runs (page_runs.hpp), smaller ones come from the heap.
-// A tail in small pages would cost a fault per 4 KiB again; a large array
-// grows geometrically, so rounding it to whole runs adds little to it.
+// A tail in small pages would cost a fault per 4 KiB again; rounding up
+// to whole runs adds less than a run (at most doubling an array of a MiB).
 #pragma once
 
 #include <cstddef>
