@@ -24,30 +24,14 @@
 
 #include <vv/vv.hpp>
 
+#include "../bench/heap_usage.hpp"  // huge_page_mappings()
+
 namespace storage_runs {
 
 using vv::detail::block_arena;
 using vv::detail::run_bytes;
 
 std::uintptr_t address(const void* p) { return reinterpret_cast<std::uintptr_t>(p); }
-
-// Bytes of the mappings marked for huge pages (VmFlags "hg").
-std::size_t huge_page_mapped_bytes() {
-  std::ifstream smaps("/proc/self/smaps");
-  std::string line;
-  std::size_t total = 0, size = 0;
-  while (std::getline(smaps, line)) {
-    unsigned long low = 0, high = 0;
-    char dash = 0;
-    std::istringstream header(line);
-    if (line.rfind("VmFlags:", 0) == 0) {
-      if ((line + " ").find(" hg ") != std::string::npos) total += size;
-    } else if (header >> std::hex >> low >> dash >> high && dash == '-') {
-      size = high - low;
-    }
-  }
-  return total;
-}
 
 // The VmFlags of the mapping that holds p, from /proc/self/smaps ("" if
 // no mapping holds it).
@@ -232,15 +216,15 @@ void check_a_ring_of_vertices(std::size_t mapped_before) {
   if (vv::detail::huge_pages_offered()) {
     // 48 bytes a vertex (a neighbourhood and the properties), current and
     // old, less the first MiB of blocks, which is on the heap.
-    EXPECT_GE(huge_page_mapped_bytes() - mapped_before, std::size_t{2} * n * 48 - (std::size_t{1} << 20))
+    EXPECT_GE(huge_page_mappings() - mapped_before, std::size_t{2} * n * 48 - (std::size_t{1} << 20))
         << "the storage is in runs";
   }
 }
 
 TEST(StorageRuns, AContextInRunsKeepsEveryVertexAndGivesBackItsRuns) {
-  const std::size_t mapped_before = huge_page_mapped_bytes();
+  const std::size_t mapped_before = huge_page_mappings();
   check_a_ring_of_vertices(mapped_before);
-  EXPECT_EQ(huge_page_mapped_bytes(), mapped_before) << "every run is unmapped";
+  EXPECT_EQ(huge_page_mappings(), mapped_before) << "every run is unmapped";
 }
 
 }  // namespace storage_runs
